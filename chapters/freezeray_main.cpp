@@ -1,0 +1,9 @@
+// freezeray: the complete renderer, every chapter registered.
+#include "freezeray/ch01/register_chapter01.hpp"
+#include "freezeray/cli.hpp"
+
+int main(int argc, char** argv) {
+    freezeray::Registry registry("freezeray", 1);
+    freezeray::register_chapter01(registry);
+    return freezeray::run_command_line(argc, argv, registry);
+}

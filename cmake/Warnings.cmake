@@ -1,0 +1,10 @@
+# freezeray_set_warnings(target): the project's warning level, applied to our own code only.
+function(freezeray_set_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow=local)
+  if(FREEZERAY_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(FREEZERAY_NATIVE)
+    target_compile_options(${target} PRIVATE -march=native)
+  endif()
+endfunction()

@@ -1,0 +1,50 @@
+// The interface every ray-intersection accelerator implements (brute force here; the KD-tree
+// and its SIMD variant in chapters 06 and 07).
+#pragma once
+
+#include "freezeray/hit.hpp"
+#include "freezeray/mesh.hpp"
+#include "freezeray/ray.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace freezeray {
+
+class Accelerator {
+public:
+    virtual ~Accelerator() = default;
+
+    // Prepares for queries over these meshes (world space). The meshes outlive the accelerator.
+    virtual void build(const std::vector<TriangleMesh>& meshes) = 0;
+
+    // The closest hit with t in (0, ray.tmax), with position, normals, uv and ids filled in.
+    virtual std::optional<Hit> intersect(const Ray& ray) const = 0;
+
+    // True if anything lies on the ray with t in (0, ray.tmax): the cheaper shadow-ray query.
+    virtual bool occluded(const Ray& ray) const = 0;
+};
+
+// Fills in a Hit from a triangle, its barycentrics and the ray distance: interpolated position
+// (with its error bound), normals and uv. Shared by every accelerator.
+struct TriangleHit;
+Hit make_hit(const std::vector<TriangleMesh>& meshes, std::uint32_t mesh, std::uint32_t triangle,
+             const TriangleHit& triangle_hit);
+
+// Tests every triangle of every mesh whose bounding box the ray meets: O(n) per ray, the
+// baseline the KD-tree chapter measures itself against.
+class BruteForceAccelerator final : public Accelerator {
+public:
+    void build(const std::vector<TriangleMesh>& meshes) override;
+    std::optional<Hit> intersect(const Ray& ray) const override;
+    bool occluded(const Ray& ray) const override;
+
+private:
+    const std::vector<TriangleMesh>* meshes_ = nullptr;
+    std::vector<Bounds3> mesh_bounds_;
+};
+
+// Slab test: does the ray meet the box within (0, tmax)? (Kay and Kajiya 1986.)
+bool ray_intersects_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds);
+
+}  // namespace freezeray

@@ -1,0 +1,62 @@
+// The film: per-pixel running mean and variance of the samples, so that the error of an image
+// can be estimated without a reference.
+#pragma once
+
+#include "freezeray/image.hpp"
+#include "freezeray/math.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+namespace freezeray {
+
+class Film {
+public:
+    Film(int width, int height);
+    Film(Film&& other) noexcept
+        : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)),
+          invalid_samples_(other.invalid_samples_.load()) {}
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    // Adds one sample of pixel (x, y) with Welford's update (Welford 1962; Knuth, TAOCP vol. 2,
+    // 4.2.2). Not synchronised: the tile loop gives each pixel to one thread at a time, in
+    // sample order, which also makes the result independent of the thread count.
+    // An invalid sample (NaN, Inf, negative) is counted and enters as zero: the estimator
+    // stays defined and the count tells that something is wrong.
+    void add_sample(int x, int y, const Spectrum& radiance);
+
+    std::uint64_t sample_count(int x, int y) const { return pixels_[index(x, y)].count; }
+    std::uint64_t invalid_sample_count() const { return invalid_samples_.load(); }
+    std::uint64_t total_sample_count() const;
+
+    // The per-pixel mean: the image estimate.
+    Image mean() const;
+    // The per-pixel variance of the mean (sample variance / n): the expected squared error of
+    // each pixel of mean(), for an unbiased estimator.
+    Image variance_of_mean() const;
+
+    // Estimated relMSE of mean() against the (unknown) exact image: the mean over pixels and
+    // channels of Var[mean] / (mean^2 + epsilon). See metrics.hpp for epsilon.
+    double estimated_relative_mse() const;
+
+    // Restores a film from a mean and variance-of-mean image with a uniform sample count
+    // (to resume a render, or merge renders). variance may be empty (zero variance).
+    static Film from_images(const Image& mean, const Image& variance_of_mean, std::uint64_t samples);
+
+private:
+    struct Pixel {
+        double mean[3] = {0, 0, 0};
+        double m2[3] = {0, 0, 0};  // sum of squared deviations from the mean
+        std::uint64_t count = 0;
+    };
+    std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width_ + x; }
+
+    int width_, height_;
+    std::vector<Pixel> pixels_;
+    std::atomic<std::uint64_t> invalid_samples_{0};
+};
+
+}  // namespace freezeray

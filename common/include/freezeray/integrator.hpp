@@ -1,0 +1,62 @@
+// Integrators: from a scene to an image with an estimate of its error.
+#pragma once
+
+#include "freezeray/film.hpp"
+#include "freezeray/image.hpp"
+#include "freezeray/random.hpp"
+#include "freezeray/ray.hpp"
+#include "freezeray/scratch_arena.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace freezeray {
+
+class Scene;
+class Progress;
+
+// How long to render and with what. Plain data with defaults; parsed in one place (cli.cpp,
+// with defaults from the scene's "render" block).
+struct RenderSettings {
+    std::uint64_t samples_per_pixel = 16;  // used when time_seconds and target_error are 0
+    double time_seconds = 0.0;             // > 0: render until this much wall time has passed
+    double target_error = 0.0;             // > 0: stop when the estimated relMSE falls below it
+    int threads = 0;                       // 0: every core
+    std::uint64_t seed = 0;
+    int max_depth = 0;                     // 0: the integrator's default
+    // Called after every pass with the film so far (for checkpoints and convergence plots).
+    std::function<void(const Film& film, std::uint64_t samples_per_pixel, double seconds)> on_pass;
+    // Set (by a signal handler) to stop after the current tile; the result holds what was done.
+    const std::atomic<bool>* stop_requested = nullptr;
+};
+
+struct RenderResult {
+    Image image;                     // the estimate (per-pixel mean)
+    Image variance;                  // per-pixel variance of the mean (empty if not estimable)
+    std::uint64_t samples_per_pixel = 0;
+    double seconds = 0.0;
+    std::uint64_t invalid_samples = 0;    // NaN, Inf or negative samples (a bug when non-zero)
+    double estimated_relative_mse = -1.0; // from `variance`; negative when not estimable
+    bool interrupted = false;
+};
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    virtual RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const = 0;
+};
+
+// An integrator that estimates each pixel independently from camera paths: it only says how one
+// camera ray's radiance is estimated (li); the image loop, the film and the passes are shared.
+class PixelIntegrator : public Integrator {
+public:
+    RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
+
+    // One sample of the radiance arriving along `ray`. All randomness from `random`; scratch
+    // allocations in `arena`, which is reset before every call.
+    virtual Spectrum li(const Ray& ray, const Scene& scene, PCG32& random, ScratchArena& arena) const = 0;
+};
+
+}  // namespace freezeray

@@ -1,0 +1,41 @@
+// Materials: what a surface is made of. At a hit, a material builds the BSDF for that point
+// (its parameters may vary over the surface) and says what light the surface emits.
+#pragma once
+
+#include "freezeray/bsdf.hpp"
+#include "freezeray/hit.hpp"
+#include "freezeray/math.hpp"
+#include "freezeray/scratch_arena.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace freezeray {
+
+class Material {
+public:
+    virtual ~Material() = default;
+
+    // The BSDF at `hit`, allocated in `arena` (valid until the arena is reset).
+    virtual const BSDF* bsdf(const Hit& hit, ScratchArena& arena) const = 0;
+
+    // The union of the BSDF flags this material can produce anywhere on its surface.
+    virtual std::uint32_t flags() const = 0;
+
+    // True when any parameter comes from a texture.
+    virtual bool is_textured() const { return false; }
+
+    // Emitted radiance Le leaving the front side (emitters are one-sided, as in Mitsuba).
+    Spectrum emission{0.0f};
+    bool is_emissive() const { return !is_black(emission); }
+
+    std::string name;  // the MTL or JSON name
+    std::string type;  // the registry name it was made with ("diffuse", ...)
+};
+
+// Le(x, wo) of a surface: `emission` on the front side, black behind it.
+inline Spectrum emitted_radiance(const Material& m, const Hit& hit, const Vec3& wo) {
+    return glm::dot(hit.geometric_normal, wo) > 0.0f ? m.emission : Spectrum(0.0f);
+}
+
+}  // namespace freezeray

@@ -1,0 +1,71 @@
+// A loaded scene: world-space meshes, materials, the camera, the accelerator, and the set of
+// effects it calls for.
+#pragma once
+
+#include "freezeray/accelerator.hpp"
+#include "freezeray/camera.hpp"
+#include "freezeray/material.hpp"
+#include "freezeray/mesh.hpp"
+#include "freezeray/scene_effects.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace freezeray {
+
+class Registry;
+
+// Render defaults a scene may state in its "render" block; command-line options override them.
+struct RenderDefaults {
+    std::string integrator;          // empty: the renderer's best suited one
+    std::uint64_t samples_per_pixel = 16;
+    int max_depth = 0;               // 0: the integrator's default
+    std::uint64_t seed = 0;
+};
+
+// One emissive triangle (an area light made of triangles).
+struct EmissiveTriangle {
+    std::uint32_t mesh;
+    std::uint32_t triangle;
+};
+
+class Scene {
+public:
+    std::string file;                           // the scene's JSON file
+    std::vector<TriangleMesh> meshes;           // world space
+    std::vector<std::unique_ptr<Material>> materials;
+    std::vector<EmissiveTriangle> emissive_triangles;
+    CameraDescription camera_description;
+    std::optional<PinholeCamera> camera;
+    std::unique_ptr<Accelerator> accelerator;
+    SceneEffects effects;
+    Bounds3 bounds;
+    RenderDefaults defaults;
+    std::vector<std::string> warnings;          // printed by the command line after loading
+
+    std::optional<Hit> intersect(const Ray& ray) const { return accelerator->intersect(ray); }
+    bool occluded(const Ray& ray) const { return accelerator->occluded(ray); }
+    const Material& material(const Hit& hit) const { return *materials[hit.material]; }
+
+    std::size_t triangle_count() const;
+};
+
+struct SceneLoadOptions {
+    std::string accelerator = "bruteforce";
+    // Overrides of the scene's camera resolution (0: keep).
+    int width = 0;
+    int height = 0;
+};
+
+// Loads a JSON scene (format: scenes/README.md), its OBJ/MTL meshes and materials, builds the
+// accelerator and computes the effects. Throws InputError naming the file and JSON path or
+// file:line of anything wrong.
+Scene load_scene(const std::string& path, const Registry& registry, const SceneLoadOptions& options = {});
+
+// Computes the set of effects from the materials and emitters (called by load_scene).
+SceneEffects compute_scene_effects(const Scene& scene);
+
+}  // namespace freezeray

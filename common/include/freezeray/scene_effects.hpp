@@ -1,0 +1,26 @@
+// The set of effects a scene calls for, computed once at load so that the renderer pays only
+// for what the scene contains.
+#pragma once
+
+#include <string>
+
+namespace freezeray {
+
+struct SceneEffects {
+    bool area_emitters = false;     // emissive triangles
+    bool delta_lights = false;      // point, spot, directional lights (chapter 03)
+    bool environment = false;       // an environment map or constant background (chapter 03)
+    bool textures = false;          // any textured material parameter (chapter 02)
+    bool diffuse = false;           // any diffuse lobe
+    bool glossy = false;            // any glossy (rough) lobe
+    bool specular = false;          // any delta (mirror, smooth glass) lobe
+    bool transmission = false;      // any transmissive lobe
+
+    // A human-readable list, one effect per line, for `info`.
+    std::string describe() const;
+
+    // The name of the best-suited integrator among those registered up to `chapter`, and why.
+    std::string suggested_integrator(int chapter) const;
+};
+
+}  // namespace freezeray

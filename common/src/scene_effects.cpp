@@ -1,0 +1,53 @@
+// The set of effects a scene calls for.
+#include "freezeray/scene_effects.hpp"
+
+#include "freezeray/bsdf.hpp"
+#include "freezeray/scene.hpp"
+
+#include <set>
+
+namespace freezeray {
+
+SceneEffects compute_scene_effects(const Scene& scene) {
+    SceneEffects effects;
+    effects.area_emitters = !scene.emissive_triangles.empty();
+    std::set<std::uint32_t> used;  // only materials some triangle uses count
+    for (const TriangleMesh& mesh : scene.meshes) used.insert(mesh.face_materials.begin(), mesh.face_materials.end());
+    for (std::uint32_t index : used) {
+        const Material& m = *scene.materials[index];
+        const std::uint32_t flags = m.flags();
+        effects.diffuse |= has_flag(flags, BSDF_Diffuse);
+        effects.glossy |= has_flag(flags, BSDF_Glossy);
+        effects.specular |= has_flag(flags, BSDF_Specular);
+        effects.transmission |= has_flag(flags, BSDF_Transmission);
+        effects.textures |= m.is_textured();
+    }
+    return effects;
+}
+
+std::string SceneEffects::describe() const {
+    std::string text;
+    auto line = [&](bool present, const char* name) { text += std::string("  ") + (present ? "[x] " : "[ ] ") + name + "\n"; };
+    line(area_emitters, "area emitters (emissive triangles)");
+    line(delta_lights, "delta lights (point, spot, directional)");
+    line(environment, "environment lighting");
+    line(textures, "textured material parameters");
+    line(diffuse, "diffuse reflection");
+    line(glossy, "glossy (rough) scattering");
+    line(specular, "specular (delta) scattering");
+    line(transmission, "transmission");
+    return text;
+}
+
+std::string SceneEffects::suggested_integrator(int chapter) const {
+    if (!area_emitters && !environment && !delta_lights) return "none: the scene has no light and renders black";
+    if (chapter >= 4 && (specular || transmission) && (area_emitters || delta_lights))
+        return "bdpt (caustics through specular surfaces are found from the light side)";
+    if (chapter >= 3) return "pt-mis (light and BSDF sampling combined)";
+    if (chapter >= 2) return "pt-is (BSDF importance sampling)";
+    if (delta_lights) return "none in this chapter: delta lights are found only by light sampling (chapter 03)";
+    if (specular) return "pt-naive renders specular surfaces black; importance sampling comes in chapter 02";
+    return "pt-naive (the only integrator of chapter 01)";
+}
+
+}  // namespace freezeray

@@ -1,0 +1,269 @@
+// Loading a JSON scene: camera, meshes with transforms, materials (from MTL, overridden by
+// name in JSON), render defaults. The format is documented in scenes/README.md.
+#include "freezeray/scene.hpp"
+
+#include "freezeray/error.hpp"
+#include "freezeray/obj_loader.hpp"
+#include "freezeray/parameters.hpp"
+#include "freezeray/registry.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <fstream>
+#include <sstream>
+
+namespace freezeray {
+
+namespace {
+
+// Largest image the renderer accepts (the film keeps 56 bytes a pixel).
+constexpr long long MaximumPixels = 1LL << 26;  // 67 million pixels, 3.8 GB of film
+
+nlohmann::json parse_json_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        std::error_code error;
+        if (!std::filesystem::exists(path, error)) throw InputError(path, "scene file does not exist");
+        throw InputError(path, "scene file cannot be read");
+    }
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+        return nlohmann::json::parse(text.str());
+    } catch (const nlohmann::json::parse_error& e) {
+        // Turn the byte offset of the error into line:column.
+        const std::string s = text.str();
+        const std::size_t offset = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, s.size());
+        std::size_t line = 1, column = 1;
+        for (std::size_t i = 0; i < offset; ++i) {
+            if (s[i] == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+        }
+        std::string reason = e.what();
+        const std::size_t colon = reason.find("syntax error");
+        if (colon != std::string::npos) reason = reason.substr(colon);
+        throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column), "malformed JSON: " + reason);
+    }
+}
+
+CameraDescription read_camera(const Parameters& p) {
+    CameraDescription camera;
+    camera.position = p.require_vec3("position");
+    camera.look_at = p.require_vec3("look_at");
+    camera.up = p.get_vec3("up", Vec3(0, 1, 0));
+    camera.fov_vertical_degrees = p.check_range("fov_vertical_degrees", p.require_float("fov_vertical_degrees"), 1e-3f, 179.0f);
+    if (p.has("resolution")) {
+        const nlohmann::json& r = p.json().at("resolution");
+        if (!r.is_array() || r.size() != 2 || !r[0].is_number_integer() || !r[1].is_number_integer())
+            throw InputError(p.where("resolution"), "expected [width, height] as two whole numbers");
+        const long long w = r[0].get<long long>(), h = r[1].get<long long>();
+        if (w < 1 || h < 1 || w > 65536 || h > 65536 || w * h > MaximumPixels)
+            throw InputError(p.where("resolution"), "resolution " + std::to_string(w) + "x" + std::to_string(h) +
+                                                        " is not between 1x1 and 65536x65536 with at most " +
+                                                        std::to_string(MaximumPixels) + " pixels");
+        camera.width = static_cast<int>(w);
+        camera.height = static_cast<int>(h);
+    }
+    const Vec3 forward = camera.look_at - camera.position;
+    if (glm::length(forward) == 0.0f) throw InputError(p.where("look_at"), "equals the camera position");
+    if (glm::length(glm::cross(forward, camera.up)) == 0.0f) throw InputError(p.where("up"), "is parallel to the view direction");
+    return camera;
+}
+
+// The object-to-world matrix of a mesh: either "matrix" (16 numbers, row-major) or
+// translate * rotate * scale.
+Mat4 read_transform(const Parameters& p, std::vector<std::string>& warnings) {
+    if (p.has("matrix")) {
+        const nlohmann::json& m = p.json().at("matrix");
+        if (!m.is_array() || m.size() != 16) throw InputError(p.where("matrix"), "expected 16 numbers (row-major 4x4)");
+        Mat4 result(1.0f);
+        for (int row = 0; row < 4; ++row)
+            for (int column = 0; column < 4; ++column) {
+                const nlohmann::json& e = m[static_cast<std::size_t>(row * 4 + column)];
+                if (!e.is_number()) throw InputError(p.where("matrix") + "/" + std::to_string(row * 4 + column), "expected a number");
+                result[column][row] = e.get<float>();  // GLM is column-major
+            }
+        return result;
+    }
+    Mat4 result(1.0f);
+    result = glm::translate(result, p.get_vec3("translate", Vec3(0.0f)));
+    if (p.has("rotate")) {
+        const Parameters r = p.child("rotate");
+        const Vec3 axis = r.require_vec3("axis");
+        if (glm::length(axis) == 0.0f) throw InputError(r.where("axis"), "must not be zero");
+        result = glm::rotate(result, glm::radians(r.require_float("degrees")), glm::normalize(axis));
+        for (std::string& w : r.unused_key_warnings()) warnings.push_back(std::move(w));
+    }
+    const Vec3 scale = p.has("scale") && p.json().at("scale").is_number() ? Vec3(p.get_float("scale", 1.0f))
+                                                                          : p.get_vec3("scale", Vec3(1.0f));
+    if (scale.x * scale.y * scale.z == 0.0f) throw InputError(p.where("scale"), "must not be zero");
+    return glm::scale(result, scale);
+}
+
+// The JSON description of the renderer material an MTL block stands for. Which types exist
+// depends on the chapter; an unregistered type is reported with the chapter that adds it.
+nlohmann::json material_from_mtl(const MtlMaterial& m) {
+    nlohmann::json j;
+    const bool rough = m.pr.has_value() && *m.pr > 0.0f;
+    if (m.illum == 4 || m.illum == 6 || m.illum == 7) {
+        j["type"] = rough ? "roughdielectric" : "dielectric";
+        j["ior"] = m.ni;
+        if (rough) j["roughness"] = *m.pr;
+    } else if ((m.pm.has_value() && *m.pm > 0.5f) || m.illum == 3 || m.illum == 5) {
+        j["type"] = rough ? "roughconductor" : "conductor";
+        j["specular_reflectance"] = {m.ks.r, m.ks.g, m.ks.b};
+        if (rough) j["roughness"] = *m.pr;
+    } else if (max_component(m.ks) > 0.0f) {
+        j["type"] = rough || m.ns > 0.0f ? "roughplastic" : "plastic";
+        j["albedo"] = {m.kd.r, m.kd.g, m.kd.b};
+        j["ior"] = m.ni;
+        if (rough) j["roughness"] = *m.pr;
+    } else {
+        j["type"] = "diffuse";
+        j["albedo"] = {m.kd.r, m.kd.g, m.kd.b};
+    }
+    if (!m.map_kd.empty()) j["albedo_texture"] = m.map_kd;
+    if (!is_black(m.ke)) j["emission"] = {m.ke.r, m.ke.g, m.ke.b};
+    return j;
+}
+
+// Builds one material from its JSON description through the registry.
+std::unique_ptr<Material> build_material(const std::string& name, const nlohmann::json& description,
+                                         const std::string& file, const std::string& path,
+                                         const std::string& base_directory, const Registry& registry,
+                                         std::vector<std::string>& warnings) {
+    const Parameters p(description, file, path, base_directory);
+    const std::string type = p.require_string("type");
+    const Spectrum emission = p.get_spectrum("emission", Spectrum(0.0f));
+    for (int c = 0; c < 3; ++c) p.check_range("emission", emission[c], 0.0f, 1e30f);
+    std::unique_ptr<Material> material = registry.make_material(type, p);
+    material->name = name;
+    material->type = type;
+    material->emission = emission;
+    for (std::string& w : p.unused_key_warnings()) warnings.push_back(std::move(w));
+    return material;
+}
+
+}  // namespace
+
+std::size_t Scene::triangle_count() const {
+    std::size_t n = 0;
+    for (const TriangleMesh& m : meshes) n += m.triangle_count();
+    return n;
+}
+
+Scene load_scene(const std::string& path, const Registry& registry, const SceneLoadOptions& options) {
+    Scene scene;
+    scene.file = path;
+    const nlohmann::json root = parse_json_file(path);
+    const std::string base = std::filesystem::path(path).parent_path().string();
+    const Parameters top(root, path, "", base);
+    top.get_string("description", "");
+    top.get_int("chapter", 1);
+
+    scene.camera_description = read_camera(top.child("camera"));
+    if (options.width > 0) scene.camera_description.width = options.width;
+    if (options.height > 0) scene.camera_description.height = options.height;
+    scene.camera.emplace(scene.camera_description);
+
+    // Material overrides by name: {"name": {...}}; with a "type" they replace the MTL
+    // material, without one they change some of its parameters.
+    const nlohmann::json no_overrides = nlohmann::json::object();
+    const nlohmann::json& overrides = top.has("materials") ? root.at("materials") : no_overrides;
+    if (!overrides.is_object()) throw InputError(top.where("materials"), "expected an object of materials by name");
+    std::map<std::string, std::uint32_t> material_index;  // by name, across all meshes
+    std::set<std::string> overrides_used;
+
+    auto add_material = [&](const std::string& name, nlohmann::json description, std::string file, std::string json_path) {
+        const auto override_it = overrides.find(name);
+        if (override_it != overrides.end()) {
+            if (!override_it->is_object()) throw InputError(top.where("materials") + "/" + name, "expected an object");
+            if (override_it->contains("type")) description = nlohmann::json::object();
+            description.update(*override_it);
+            file = path;
+            json_path = "/materials/" + name;
+            overrides_used.insert(name);
+        }
+        scene.materials.push_back(build_material(name, description, file, json_path, base, registry, scene.warnings));
+        material_index[name] = static_cast<std::uint32_t>(scene.materials.size() - 1);
+        return material_index[name];
+    };
+
+    if (!top.has("meshes")) throw InputError(top.where("meshes"), "is required (an array of meshes)");
+    const nlohmann::json& meshes = root.at("meshes");
+    if (!meshes.is_array() || meshes.empty()) throw InputError(top.where("meshes"), "expected a non-empty array");
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+        const Parameters m(meshes[i], path, "/meshes/" + std::to_string(i), base);
+        const std::string obj_path = m.require_existing_file("file");
+        const Mat4 transform = m.has("transform") ? read_transform(m.child("transform"), scene.warnings) : Mat4(1.0f);
+        const std::string forced_material = m.get_string("material", "");
+        for (std::string& w : m.unused_key_warnings()) scene.warnings.push_back(std::move(w));
+
+        ObjLoadResult obj = load_obj(obj_path);
+        if (obj.dropped_degenerate_triangles > 0)
+            scene.warnings.push_back(obj_path + ": dropped " + std::to_string(obj.dropped_degenerate_triangles) +
+                                     " degenerate triangles (zero area, repeated vertex or non-finite coordinate)");
+        for (std::string& w : obj.warnings) scene.warnings.push_back(std::move(w));
+
+        // Map this file's MTL materials onto scene materials (shared by name across files).
+        std::vector<std::uint32_t> local_to_scene(obj.materials.size());
+        if (!forced_material.empty()) {
+            if (!overrides.contains(forced_material))
+                throw InputError(m.where("material"), "names material '" + forced_material + "', which /materials does not define");
+            const auto it = material_index.find(forced_material);
+            const std::uint32_t index = it != material_index.end()
+                                            ? it->second
+                                            : add_material(forced_material, nlohmann::json::object(), path, "");
+            std::fill(local_to_scene.begin(), local_to_scene.end(), index);
+        } else {
+            for (std::size_t k = 0; k < obj.materials.size(); ++k) {
+                const MtlMaterial& mtl = obj.materials[k];
+                const auto it = material_index.find(mtl.name);
+                local_to_scene[k] = it != material_index.end() ? it->second
+                                                               : add_material(mtl.name, material_from_mtl(mtl), mtl.where, "");
+            }
+        }
+        for (TriangleMesh& mesh : obj.meshes) {
+            for (std::uint32_t& f : mesh.face_materials) f = local_to_scene[f];
+            mesh.transform(transform);
+            scene.meshes.push_back(std::move(mesh));
+        }
+    }
+    for (const auto& [name, value] : overrides.items())
+        if (!overrides_used.count(name))
+            scene.warnings.push_back(top.where("materials") + "/" + name + ": material '" + name +
+                                     "' is not used by any mesh");
+
+    if (top.has("render")) {
+        const Parameters r = top.child("render");
+        scene.defaults.integrator = r.get_string("integrator", "");
+        const int spp = r.get_int("spp", 16);
+        if (spp < 1) throw InputError(r.where("spp"), "must be at least 1");
+        scene.defaults.samples_per_pixel = static_cast<std::uint64_t>(spp);
+        scene.defaults.max_depth = r.get_int("max_depth", 0);
+        if (scene.defaults.max_depth < 0) throw InputError(r.where("max_depth"), "must not be negative");
+        scene.defaults.seed = static_cast<std::uint64_t>(r.get_int("seed", 0));
+        for (std::string& w : r.unused_key_warnings()) scene.warnings.push_back(std::move(w));
+    }
+    for (std::string& w : top.unused_key_warnings()) scene.warnings.push_back(std::move(w));
+
+    for (std::uint32_t mi = 0; mi < scene.meshes.size(); ++mi) {
+        const TriangleMesh& mesh = scene.meshes[mi];
+        scene.bounds.expand(mesh.bounds());
+        for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
+            if (scene.materials[mesh.face_materials[t]]->is_emissive()) scene.emissive_triangles.push_back({mi, t});
+    }
+    scene.accelerator = registry.make_accelerator(options.accelerator, "--accel");
+    scene.accelerator->build(scene.meshes);
+    scene.effects = compute_scene_effects(scene);
+    return scene;
+}
+
+}  // namespace freezeray

@@ -1,0 +1,89 @@
+// Watertight ray-triangle intersection: Woop, Benthin and Wald, "Watertight Ray/Triangle
+// Intersection", JCGT 2(1), 2013. The triangle is transformed into a space where the ray starts
+// at the origin and points along +z; the hit test is then three 2-D edge functions, evaluated
+// so that neighbouring triangles agree exactly on their shared edge.
+#include "freezeray/triangle_intersection.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace freezeray {
+
+RayShear::RayShear(const Vec3& d) {
+    // kz: the dimension where the direction is largest; kx, ky the other two, swapped if needed
+    // to keep the winding of the transformed triangle (paper, section 3).
+    const Vec3 a = glm::abs(d);
+    kz = (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
+    if (d[kz] < 0.0f) std::swap(kx, ky);
+    sx = d[kx] / d[kz];
+    sy = d[ky] / d[kz];
+    sz = 1.0f / d[kz];
+}
+
+namespace {
+
+// Tie-breaking for a ray exactly on an edge (edge function exactly zero): the edge belongs to
+// only one of the two triangles sharing it, as with the "top-left" rule of rasterisers. The two
+// triangles traverse the shared edge in opposite directions, so exactly one of them owns it; a
+// hit exactly on a shared edge or vertex is therefore reported once, never twice or not at all.
+bool owns_edge(float from_x, float from_y, float to_x, float to_y) {
+    const float dx = to_x - from_x;
+    const float dy = to_y - from_y;
+    return dy > 0.0f || (dy == 0.0f && dx > 0.0f);
+}
+
+}  // namespace
+
+std::optional<TriangleHit> intersect_triangle(const Ray& ray, const RayShear& shear, const Vec3& p0,
+                                              const Vec3& p1, const Vec3& p2) {
+    // Vertices relative to the ray origin, sheared so the ray runs along +z (paper, figure 2).
+    const Vec3 a = p0 - ray.origin;
+    const Vec3 b = p1 - ray.origin;
+    const Vec3 c = p2 - ray.origin;
+    const float ax = a[shear.kx] - shear.sx * a[shear.kz];
+    const float ay = a[shear.ky] - shear.sy * a[shear.kz];
+    const float bx = b[shear.kx] - shear.sx * b[shear.kz];
+    const float by = b[shear.ky] - shear.sy * b[shear.kz];
+    const float cx = c[shear.kx] - shear.sx * c[shear.kz];
+    const float cy = c[shear.ky] - shear.sy * c[shear.kz];
+
+    // Scaled barycentric coordinates: the 2-D edge functions at the origin.
+    float u = cx * by - cy * bx;
+    float v = ax * cy - ay * cx;
+    float w = bx * ay - by * ax;
+
+    // On an edge in single precision: recompute in double so that the sign is exact.
+    if (u == 0.0f || v == 0.0f || w == 0.0f) {
+        u = static_cast<float>(static_cast<double>(cx) * by - static_cast<double>(cy) * bx);
+        v = static_cast<float>(static_cast<double>(ax) * cy - static_cast<double>(ay) * cx);
+        w = static_cast<float>(static_cast<double>(bx) * ay - static_cast<double>(by) * ax);
+    }
+
+    // Inside means all three have the same sign (either winding is accepted).
+    if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return std::nullopt;
+    const float det = u + v + w;
+    if (det == 0.0f) return std::nullopt;  // degenerate, or the ray lies in the triangle's plane
+
+    // Exactly on an edge: only the owning triangle reports the hit. u is the edge b->c, v the
+    // edge c->a, w the edge a->b.
+    if (u == 0.0f && !owns_edge(bx, by, cx, cy)) return std::nullopt;
+    if (v == 0.0f && !owns_edge(cx, cy, ax, ay)) return std::nullopt;
+    if (w == 0.0f && !owns_edge(ax, ay, bx, by)) return std::nullopt;
+
+    // Scaled hit distance, compared with the interval before dividing (paper, section 3.3).
+    const float az = shear.sz * a[shear.kz];
+    const float bz = shear.sz * b[shear.kz];
+    const float cz = shear.sz * c[shear.kz];
+    const float t_scaled = u * az + v * bz + w * cz;
+    if (det < 0.0f && (t_scaled >= 0.0f || t_scaled < ray.tmax * det)) return std::nullopt;
+    if (det > 0.0f && (t_scaled <= 0.0f || t_scaled > ray.tmax * det)) return std::nullopt;
+
+    const float inverse_det = 1.0f / det;
+    const float t = t_scaled * inverse_det;
+    if (!(t > 0.0f) || !(t < ray.tmax)) return std::nullopt;
+    return TriangleHit{t, u * inverse_det, v * inverse_det, w * inverse_det};
+}
+
+}  // namespace freezeray

@@ -1,0 +1,76 @@
+// Grading tests of chapter 01's exercises. Each test case is named after its exercise and
+// checks the student's code against an exact or statistical answer.
+#include "freezeray/lambertian.hpp"
+#include "freezeray/warps.hpp"
+
+#include "chi_square.hpp"
+#include "statistics.hpp"
+#include "test_scenes.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace freezeray;
+
+TEST_CASE("ch01/uniform-hemisphere", "[exercise]") {
+    // Every direction is a unit vector on the upper hemisphere, and their distribution over the
+    // whole sphere matches the density 1/(2 pi) on z >= 0 (chi-square, false-failure rate 1e-6).
+    PCG32 random(11, 1);
+    for (int i = 0; i < 10000; ++i) {
+        const Vec3 w = sample_uniform_hemisphere(Vec2(random.next_float(), random.next_float()));
+        REQUIRE(glm::length(w) == Approx(1.0f).margin(1e-5));
+        REQUIRE(w.z >= 0.0f);
+    }
+    stats::ChiSquareOptions options;
+    options.alpha = stats::exercise_test_alpha;
+    const auto result = stats::chi_square_test(
+        stats::Domain::sphere(),
+        [](PCG32& r) -> std::optional<Vec3> { return sample_uniform_hemisphere(Vec2(r.next_float(), r.next_float())); },
+        [](const Vec3& w) { return w.z >= 0.0f ? 1.0 / (2.0 * 3.14159265358979323846) : 0.0; }, options);
+    INFO(result.message);
+    CHECK(result.passed);
+}
+
+TEST_CASE("ch01/lambertian-brdf", "[exercise]") {
+    const Spectrum albedo(0.8f, 0.5f, 0.2f);
+    const LambertianBSDF bsdf(albedo);
+    const Vec3 up = glm::normalize(Vec3(0.2f, -0.4f, 0.9f));
+    const Vec3 up2 = glm::normalize(Vec3(-0.7f, 0.1f, 0.3f));
+    const Vec3 down = glm::normalize(Vec3(0.1f, 0.3f, -0.5f));
+    // f = albedo / pi for directions on the same side, on either side of the surface.
+    const Spectrum expected = albedo / 3.14159265f;
+    for (int c = 0; c < 3; ++c) {
+        CHECK(bsdf.eval(up, up2)[c] == Approx(expected[c]));
+        CHECK(bsdf.eval(-up, -up2)[c] == Approx(expected[c]));
+        CHECK(bsdf.eval(up, down)[c] == 0.0f);   // a Lambertian surface does not transmit
+        CHECK(bsdf.eval(down, up2)[c] == 0.0f);
+    }
+    // Energy: the integral of f cos over the hemisphere is the albedo (midpoint rule in
+    // cos(theta), exact for a constant f).
+    Spectrum integral(0.0f);
+    constexpr int Steps = 200;
+    for (int i = 0; i < Steps; ++i) {
+        const float cos_theta = (i + 0.5f) / Steps;
+        const Vec3 wi(std::sqrt(1 - cos_theta * cos_theta), 0.0f, cos_theta);
+        integral += bsdf.eval(up, wi) * cos_theta * (2.0f * 3.14159265f / Steps);
+    }
+    for (int c = 0; c < 3; ++c) CHECK(integral[c] == Approx(albedo[c]).epsilon(1e-3));
+}
+
+TEST_CASE("ch01/path-throughput", "[exercise]") {
+    // The furnace: the radiance is exactly Le / (1 - albedo) = 1 in every direction. The mean of
+    // the pixels must match it within a t-test at false-failure rate 1e-6 (the pixels are
+    // independent estimates of the same value).
+    testing::TestRender request;
+    request.scene = testing::scene_path("furnace/scene.json");
+    request.samples_per_pixel = 16;
+    request.width = 16;
+    request.height = 16;
+    request.seed = 5;
+    const RenderResult result = testing::render(request);
+    std::vector<double> values;
+    for (const Spectrum& p : result.image.pixels()) values.push_back(p.g);
+    const stats::TestResult test = stats::one_sample_t_test(values, 1.0, stats::exercise_test_alpha);
+    INFO(test.message);
+    CHECK(test.passed);
+    CHECK(result.invalid_samples == 0u);
+}

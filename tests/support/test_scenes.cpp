@@ -1,0 +1,69 @@
+// Helpers for tests that render.
+#include "test_scenes.hpp"
+
+#include "freezeray/ch01/register_chapter01.hpp"
+#include "freezeray/progress.hpp"
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+
+#ifndef FREEZERAY_SOURCE_DIR
+#define FREEZERAY_SOURCE_DIR "."
+#endif
+
+namespace freezeray::testing {
+
+std::string scene_path(const std::string& relative) { return std::string(FREEZERAY_SOURCE_DIR) + "/scenes/" + relative; }
+
+std::string test_data_path(const std::string& relative) {
+    return std::string(FREEZERAY_SOURCE_DIR) + "/tests/data/" + relative;
+}
+
+std::optional<std::string> shared_scenes_folder() {
+    std::string folder = std::string(FREEZERAY_SOURCE_DIR) + "/../shared/scenes";
+    if (const char* env = std::getenv("FREEZERAY_SHARED_SCENES")) folder = env;
+    std::error_code error;
+    if (std::filesystem::is_directory(folder, error)) return folder;
+    return std::nullopt;
+}
+
+const Registry& full_registry() {
+    static const Registry registry = [] {
+        Registry r("freezeray", 1);
+        register_chapter01(r);
+        return r;
+    }();
+    return registry;
+}
+
+RenderResult render(const TestRender& request) {
+    SceneLoadOptions options;
+    options.width = request.width;
+    options.height = request.height;
+    const Scene scene = load_scene(request.scene, full_registry(), options);
+    RenderSettings settings;
+    settings.samples_per_pixel = request.samples_per_pixel;
+    settings.seed = request.seed;
+    settings.threads = request.threads;
+    settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
+    const auto integrator = full_registry().make_integrator(request.integrator, settings, "test");
+    Progress quiet(true);
+    return integrator->render(scene, settings, quiet);
+}
+
+TemporaryFolder::TemporaryFolder() {
+    static std::atomic<int> counter{0};
+    std::random_device device;
+    const auto base = std::filesystem::temp_directory_path();
+    path_ = (base / ("freezeray-test-" + std::to_string(device()) + "-" + std::to_string(counter++))).string();
+    std::filesystem::create_directories(path_);
+}
+
+TemporaryFolder::~TemporaryFolder() {
+    std::error_code error;
+    std::filesystem::remove_all(path_, error);
+}
+
+}  // namespace freezeray::testing

@@ -1,0 +1,54 @@
+// Helpers for tests that render: paths of the course's scenes, the complete registry, and a
+// one-call render.
+#pragma once
+
+#include "freezeray/integrator.hpp"
+#include "freezeray/registry.hpp"
+#include "freezeray/scene.hpp"
+
+#include <optional>
+#include <string>
+
+namespace freezeray::testing {
+
+// Absolute path of a file under the repository's scenes/ folder.
+std::string scene_path(const std::string& relative);
+
+// Absolute path of a file under tests/data/.
+std::string test_data_path(const std::string& relative);
+
+// The shared large scenes (../shared/scenes or $FREEZERAY_SHARED_SCENES), when present.
+std::optional<std::string> shared_scenes_folder();
+
+// A registry with every chapter registered (what `freezeray` has).
+const Registry& full_registry();
+
+struct TestRender {
+    std::string scene;             // path of the scene JSON
+    std::string integrator = "pt-naive";
+    std::uint64_t samples_per_pixel = 16;
+    std::uint64_t seed = 1;
+    int threads = 0;
+    int width = 0;                 // 0: the scene's
+    int height = 0;
+    int max_depth = 0;             // 0: the scene's, else the integrator's default
+};
+
+// Loads and renders, quietly.
+RenderResult render(const TestRender& request);
+
+// A fresh empty folder under the system's temporary folder, removed when the object dies.
+class TemporaryFolder {
+public:
+    TemporaryFolder();
+    ~TemporaryFolder();
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+    const std::string& path() const { return path_; }
+    std::string file(const std::string& name) const { return path_ + "/" + name; }
+
+private:
+    std::string path_;
+};
+
+}  // namespace freezeray::testing

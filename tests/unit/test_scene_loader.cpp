@@ -1,0 +1,125 @@
+// Loading JSON scenes: the shipped scenes, overrides, effects, and errors that name the place.
+#include "freezeray/error.hpp"
+#include "freezeray/scene.hpp"
+
+#include "test_scenes.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+
+using namespace freezeray;
+using freezeray::testing::TemporaryFolder;
+
+namespace {
+
+void write_file(const std::string& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text;
+}
+
+// A one-triangle OBJ with one material, and a scene around it; `scene_text` may refer to
+// tri.obj.
+std::string make_scene(const TemporaryFolder& folder, const std::string& scene_text) {
+    write_file(folder.file("tri.mtl"), "newmtl paint\nKd 0.5 0.25 0.125\n\nnewmtl lamp\nKd 0 0 0\nKe 2 2 2\n");
+    write_file(folder.file("tri.obj"), "mtllib tri.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl paint\nf 1 2 3\n"
+                                       "usemtl lamp\nf 1 3 4\n");
+    write_file(folder.file("scene.json"), scene_text);
+    return folder.file("scene.json");
+}
+
+const std::string camera = R"("camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [8, 4]})";
+
+std::string load_error(const std::string& path) {
+    try {
+        load_scene(path, testing::full_registry());
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("the Cornell box loads with its published dimensions, materials and light", "[unit][scene]") {
+    const Scene scene = load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry());
+    CHECK(scene.triangle_count() == 32u);  // 16 quads
+    CHECK(scene.emissive_triangles.size() == 2u);
+    CHECK(scene.camera_description.position == Vec3(278, 273, -800));
+    CHECK(scene.camera_description.fov_vertical_degrees == Approx(39.3f));
+    CHECK(scene.bounds.max.x == Approx(556.0f));
+    CHECK(scene.bounds.max.z == Approx(559.2f));
+    CHECK(scene.effects.area_emitters);
+    CHECK(scene.effects.diffuse);
+    CHECK_FALSE(scene.effects.specular);
+    CHECK_FALSE(scene.effects.transmission);
+    CHECK(scene.warnings.empty());
+    // The light faces down.
+    const auto& light = scene.emissive_triangles[0];
+    const TriangleMesh& mesh = scene.meshes[light.mesh];
+    const auto& t = mesh.triangles[light.triangle];
+    const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+    CHECK(n.y < 0.0f);
+}
+
+TEST_CASE("materials come from the MTL and JSON overrides replace them by name", "[unit][scene]") {
+    TemporaryFolder folder;
+    const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"translate": [1, 2, 3], "scale": 2}}],
+        "materials": {"lamp": {"emission": [5, 6, 7]}}})");
+    const Scene scene = load_scene(path, testing::full_registry());
+    REQUIRE(scene.materials.size() == 2u);
+    CHECK(scene.materials[0]->name == "paint");
+    CHECK(scene.materials[0]->type == "diffuse");
+    CHECK(scene.materials[1]->emission == Spectrum(5, 6, 7));
+    CHECK(scene.emissive_triangles.size() == 1u);
+    CHECK(scene.bounds.min == Vec3(1, 2, 3));
+    CHECK(scene.bounds.max == Vec3(3, 4, 5));
+    CHECK(scene.camera_description.width == 8);
+    CHECK(scene.camera_description.height == 4);
+}
+
+TEST_CASE("scene errors name the file and the JSON path or line", "[unit][scene]") {
+    TemporaryFolder folder;
+    SECTION("malformed JSON gives line and column") {
+        const std::string path = make_scene(folder, "{\n  \"camera\": {,\n}");
+        CHECK_THAT(load_error(path), Catch::Contains("scene.json:2:") && Catch::Contains("malformed JSON"));
+    }
+    SECTION("a missing OBJ names the JSON path and the file") {
+        const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "nowhere.obj"}]})");
+        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/file") && Catch::Contains("nowhere.obj"));
+    }
+    SECTION("an unknown material type names the path and the chapter introducing it") {
+        const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
+            "materials": {"paint": {"type": "roughconductor"}}})");
+        CHECK_THAT(load_error(path), Catch::Contains("/materials/paint/type") && Catch::Contains("chapter 02"));
+        const std::string path2 = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
+            "materials": {"paint": {"type": "velvet"}}})");
+        CHECK_THAT(load_error(path2), Catch::Contains("unknown material 'velvet'"));
+    }
+    SECTION("wrong types and out-of-range values name the path") {
+        const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
+            "materials": {"paint": {"albedo": "red"}}})");
+        CHECK_THAT(load_error(path), Catch::Contains("/materials/paint/albedo") && Catch::Contains("expected"));
+        const std::string path2 = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
+            "materials": {"paint": {"albedo": [0.5, 1.5, 0.5]}}})");
+        CHECK_THAT(load_error(path2), Catch::Contains("/materials/paint/albedo") && Catch::Contains("outside"));
+    }
+    SECTION("a missing camera, and a camera looking at itself") {
+        const std::string path = make_scene(folder, R"({"meshes": [{"file": "tri.obj"}]})");
+        CHECK_THAT(load_error(path), Catch::Contains("/camera"));
+        const std::string path2 = make_scene(folder, R"({"camera": {"position": [1, 1, 1], "look_at": [1, 1, 1], "fov_vertical_degrees": 40}, "meshes": [{"file": "tri.obj"}]})");
+        CHECK_THAT(load_error(path2), Catch::Contains("/camera/look_at"));
+    }
+    SECTION("an absurd resolution is refused before anything is allocated") {
+        const std::string path = make_scene(folder, R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [100000, 100000]}, "meshes": [{"file": "tri.obj"}]})");
+        CHECK_THAT(load_error(path), Catch::Contains("/camera/resolution"));
+    }
+}
+
+TEST_CASE("unknown keys give a warning with the nearest valid name", "[unit][scene]") {
+    TemporaryFolder folder;
+    const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}], "rendr": {}})");
+    const Scene scene = load_scene(path, testing::full_registry());
+    REQUIRE(scene.warnings.size() == 1u);
+    CHECK_THAT(scene.warnings[0], Catch::Contains("'rendr'") && Catch::Contains("did you mean 'render'"));
+}
