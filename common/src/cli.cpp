@@ -21,6 +21,7 @@ struct RenderOptions {
     std::string scene;
     std::string integrator;
     long long spp = 0;
+    bool spp_given = false;
     double time_seconds = 0.0;
     double target_error = 0.0;
     std::string accelerator = "bruteforce";
@@ -38,7 +39,8 @@ std::string two_digit(int chapter) { return (chapter < 10 ? "0" : "") + std::to_
 
 // Checks the options that CLI11 cannot check alone; throws InputError naming the option.
 void check_render_options(const RenderOptions& o) {
-    if (o.spp < 0) throw InputError("--spp", "the sample count must be at least 1 (got " + std::to_string(o.spp) + ")");
+    if (o.spp_given && o.spp < 1)
+        throw InputError("--spp", "the sample count must be at least 1 (got " + std::to_string(o.spp) + ")");
     if (o.spp > (1LL << 40)) throw InputError("--spp", "the sample count " + std::to_string(o.spp) + " is absurd");
     if (o.time_seconds < 0.0) throw InputError("--time", "must be positive");
     if (o.target_error < 0.0) throw InputError("--target-error", "must be positive");
@@ -72,10 +74,10 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     print_warnings(scene);
 
     RenderSettings settings;
-    settings.samples_per_pixel = options.spp > 0 ? static_cast<std::uint64_t>(options.spp) : scene.defaults.samples_per_pixel;
+    settings.samples_per_pixel = options.spp_given ? static_cast<std::uint64_t>(options.spp) : scene.defaults.samples_per_pixel;
     settings.time_seconds = options.time_seconds;
     settings.target_error = options.target_error;
-    if (options.target_error > 0.0 && options.spp == 0) settings.samples_per_pixel = UINT64_MAX;  // error decides
+    if (options.target_error > 0.0 && !options.spp_given) settings.samples_per_pixel = UINT64_MAX;  // error decides
     settings.threads = options.threads;
     settings.seed = options.seed >= 0 ? static_cast<std::uint64_t>(options.seed) : scene.defaults.seed;
     settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.defaults.max_depth;
@@ -177,6 +179,7 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     }
 
     try {
+        render.spp_given = spp->count() > 0;
         if (*render_command) return run_render(render, registry);
         if (*info_command) return run_info(info_scene, registry);
     } catch (const InputError& e) {

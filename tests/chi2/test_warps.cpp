@@ -13,7 +13,7 @@ namespace {
 
 void require_passes(const stats::ChiSquareResult& result, const std::string& name) {
     if (!result.passed) {
-        const std::string folder = stats::write_evidence_text(name, result.message + "\n" + result.table());
+        const std::string folder = stats::write_evidence(name, result);
         FAIL(result.message << "\nevidence: " << folder);
     }
     SUCCEED(result.message);

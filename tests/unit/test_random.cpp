@@ -14,7 +14,7 @@ TEST_CASE("PCG32 reproduces the reference sequence of pcg32-demo (seed 42, strea
     for (std::uint32_t e : expected) CHECK(random.next_uint() == e);
 }
 
-TEST_CASE("next_float is in [0, 1) and next_below is in range", "[unit][random]") {
+TEST_CASE("next_float stays below 1 and next_below stays below its bound", "[unit][random]") {
     PCG32 random(7, 3);
     for (int i = 0; i < 100000; ++i) {
         const float f = random.next_float();
