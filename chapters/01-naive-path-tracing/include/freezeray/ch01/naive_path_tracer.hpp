@@ -11,7 +11,7 @@ namespace freezeray::ch01 {
 // The default maximum path length, in segments (camera ray = 1). Chosen so that the Cornell
 // box's mean radiance is within 1% of its infinite-depth value (measured in the book, chapter
 // 01, "How deep is deep enough?").
-inline constexpr int DefaultMaxDepth = 16;
+inline constexpr int DefaultMaxDepth = 10;
 
 class NaivePathTracer final : public PixelIntegrator {
 public:

@@ -1,0 +1,221 @@
+// Malformed image files: each must throw an InputError that names the file, and none may crash
+// the reader or make it allocate absurd amounts of memory.
+#include "freezeray/error.hpp"
+#include "freezeray/image.hpp"
+#include "image_files.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace freezeray;
+using namespace freezeray::test;
+using Catch::Contains;
+
+namespace {
+
+// A 16x16 image with some variety, so that compressed formats have real content.
+Image varied_image() {
+    Image image(16, 16);
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 16; ++x) image.at(x, y) = Spectrum(x / 15.0f, y / 15.0f, ((x * 7 + y * 3) % 11) / 10.0f);
+    }
+    return image;
+}
+
+// Reads `path`, accepting success or an InputError naming it: anything else fails the test.
+void read_or_input_error(const std::string& path) {
+    try {
+        read_image(path);
+    } catch (const InputError& error) {
+        CHECK_THAT(error.what(), Contains(path));
+    }
+}
+
+// Overwrites a big-endian 32-bit number in a byte vector.
+void put_big_endian(std::vector<unsigned char>& bytes, std::size_t at, std::uint32_t value) {
+    for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<unsigned char>(value >> (24 - 8 * i));
+}
+
+}  // namespace
+
+TEST_CASE("missing, empty and unnamed files throw InputError naming the file", "[unit][image]") {
+    TemporaryFolder folder;
+    const std::string missing = folder.file("missing.exr");
+    CHECK_THAT(input_error_message([&] { read_image(missing); }), Contains(missing) && Contains("no such file"));
+
+    std::filesystem::create_directory(folder.file("folder.png"));
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("folder.png")); }), Contains("folder.png"));
+
+    write_file(folder.file("empty.pfm"), "");
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("empty.pfm")); }),
+               Contains("empty.pfm") && Contains("empty"));
+
+    for (const std::string name : {"image.txt", "image", "image.gif"}) {
+        write_file(folder.file(name), "whatever");
+        CHECK_THAT(input_error_message([&] { read_image(folder.file(name)); }), Contains(folder.file(name)));
+    }
+}
+
+TEST_CASE("garbage bytes under an image extension throw InputError", "[unit][image]") {
+    TemporaryFolder folder;
+    std::string garbage;
+    for (int i = 0; i < 40; ++i) garbage += "this is not an image at all; ";
+    for (const std::string name : {"junk.exr", "junk.png", "junk.hdr", "junk.pfm", "junk.jpg", "junk.bmp", "junk.tga"}) {
+        write_file(folder.file(name), garbage);
+        CHECK_THAT(input_error_message([&] { read_image(folder.file(name)); }), Contains(folder.file(name)));
+    }
+}
+
+TEST_CASE("truncated files in every format throw InputError", "[unit][image]") {
+    TemporaryFolder folder;
+    for (const std::string name : {"cut.exr", "cut.pfm", "cut.hdr", "cut.png"}) {
+        INFO(name);
+        write_image(folder.file(name), varied_image());
+        const std::vector<unsigned char> whole = read_bytes(folder.file(name));
+        for (const std::size_t kept : {whole.size() - 1, whole.size() / 2, std::size_t(20), std::size_t(3)}) {
+            INFO("kept " << kept << " of " << whole.size() << " bytes");
+            write_bytes(folder.file(name), std::vector<unsigned char>(whole.begin(), whole.begin() + long(kept)));
+            CHECK_THAT(input_error_message([&] { read_image(folder.file(name)); }), Contains(folder.file(name)));
+        }
+    }
+}
+
+TEST_CASE("malformed PFM headers throw InputError with the reason", "[unit][image]") {
+    TemporaryFolder folder;
+    const std::string path = folder.file("bad.pfm");
+    const std::vector<float> one_pixel = {1.0f, 2.0f, 3.0f};
+    struct Case {
+        std::string header;
+        std::vector<float> values;
+        std::string reason;
+    };
+    const std::vector<Case> cases = {
+        {"P6\n1 1\n255\n", one_pixel, "PF"},                       // a PPM, not a PFM
+        {"PFM\n1 1\n-1\n", one_pixel, "white space"},
+        {"PF", {}, "width"},                                       // header ends at once
+        {"PF\n1", {}, "height"},
+        {"PF\n1 1\n-1", {}, "no pixel data"},
+        {"PF\n1 x\n-1\n", one_pixel, "height 'x'"},
+        {"PF\n1.5 1\n-1\n", one_pixel, "width '1.5'"},
+        {"PF\n0 5\n-1\n", one_pixel, "invalid image size 0x5"},
+        {"PF\n-3 5\n-1\n", one_pixel, "invalid image size -3x5"},
+        {"PF\n100000 100000\n-1\n", one_pixel, "too large"},       // 10^10 pixels: refused before allocating
+        {"PF\n4294967297 1\n-1\n", one_pixel, "too large"},        // 2^32 + 1 would wrap a 32-bit int
+        {"PF\n99999999999999999999999 1\n-1\n", one_pixel, "not a whole number"},
+        {"PF\n1 1\nnan\n", one_pixel, "scale 'nan'"},
+        {"PF\n1 1\ninf\n", one_pixel, "scale 'inf'"},
+        {"PF\n1 1\n0\n", one_pixel, "scale '0'"},
+        {"PF\n1 1\nabc\n", one_pixel, "scale 'abc'"},
+        {"PF\n2 1\n-1\n", one_pixel, "truncated"},                 // 2 pixels announced, 1 present
+        {"PF\n1 1\n-1\n", {1.0f, 2.0f, 3.0f, 4.0f}, "unexpected bytes"},
+    };
+    for (const Case& bad : cases) {
+        INFO(bad.header);
+        write_file(path, bad.header, bad.values);
+        CHECK_THAT(input_error_message([&] { read_image(path); }), Contains(path) && Contains(bad.reason));
+    }
+}
+
+TEST_CASE("malformed Radiance HDR files throw InputError with the reason", "[unit][image]") {
+    TemporaryFolder folder;
+    const std::string path = folder.file("bad.hdr");
+    struct Case {
+        std::string header;
+        std::vector<unsigned char> pixels;
+        std::string reason;
+    };
+    const std::vector<Case> cases = {
+        {"#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 1\n", {1, 1, 1, 128}, "xyze"},
+        {"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n", {}, "header ends"},
+        {"#?RADIANCE\n\n+Y 1 +X 1\n", {1, 1, 1, 128}, "resolution line"},
+        {"#?RADIANCE\n\n-Y 0 +X 1\n", {1, 1, 1, 128}, "invalid image size"},
+        {"#?RADIANCE\n\n-Y -4 +X 1\n", {1, 1, 1, 128}, "invalid image size"},
+        {"#?RADIANCE\n\n-Y 20000 +X 20000\n", {1, 1, 1, 128}, "too large"},
+        {"#?RADIANCE\n\n-Y one +X 1\n", {1, 1, 1, 128}, "'one'"},
+        {"#?RADIANCE\n\n-Y 1 +X 2\n", {1, 1, 1, 128}, "truncated"},                   // 2 pixels, 1 present
+        {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 0}, "run-length count"},           // a count of zero
+        {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 128 + 9, 1}, "run-length count"},  // 9 > 8 pixels
+        {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 128 + 8}, "truncated"},            // no run value
+    };
+    for (const Case& bad : cases) {
+        INFO(bad.header);
+        std::vector<unsigned char> bytes(bad.header.begin(), bad.header.end());
+        bytes.insert(bytes.end(), bad.pixels.begin(), bad.pixels.end());
+        write_bytes(path, bytes);
+        CHECK_THAT(input_error_message([&] { read_image(path); }), Contains(path) && Contains(bad.reason));
+    }
+}
+
+TEST_CASE("a PNG header announcing more than 2^28 pixels is refused before decoding", "[unit][image]") {
+    TemporaryFolder folder;
+    write_image(folder.file("huge.png"), Image(2, 2, Spectrum(0.5f)));
+    std::vector<unsigned char> bytes = read_bytes(folder.file("huge.png"));
+    // The IHDR chunk follows the 8-byte signature: length (4), "IHDR" (4), width (4), height (4).
+    REQUIRE(std::string(bytes.begin() + 12, bytes.begin() + 16) == "IHDR");
+    put_big_endian(bytes, 16, 16384);
+    put_big_endian(bytes, 20, 17000);  // 278 million pixels: stb would try, we refuse
+    write_bytes(folder.file("huge.png"), bytes);
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("huge.png")); }),
+               Contains(folder.file("huge.png")) && Contains("too large"));
+}
+
+TEST_CASE("an EXR data window of more than 2^28 pixels is refused before decoding", "[unit][image]") {
+    TemporaryFolder folder;
+    write_image(folder.file("huge.exr"), Image(2, 2, Spectrum(0.5f)));
+    std::vector<unsigned char> bytes = read_bytes(folder.file("huge.exr"));
+    // The attribute is: "dataWindow\0box2i\0", size (4 bytes), then min x, min y, max x, max y.
+    const std::string name("dataWindow\0box2i\0", 17);
+    const auto found = std::search(bytes.begin(), bytes.end(), name.begin(), name.end());
+    REQUIRE(found != bytes.end());
+    const std::size_t max_x = static_cast<std::size_t>(found - bytes.begin()) + name.size() + 4 + 8;
+    // Max x and max y (little endian) set to 19999: a 20000 x 20000 window, 4 * 10^8 pixels.
+    for (std::size_t at : {max_x, max_x + 4}) {
+        const std::vector<unsigned char> value = {0x1f, 0x4e, 0, 0};  // 19999 = 0x4e1f
+        std::copy(value.begin(), value.end(), bytes.begin() + long(at));
+    }
+    write_bytes(folder.file("huge.exr"), bytes);
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("huge.exr")); }), Contains(folder.file("huge.exr")));
+}
+
+TEST_CASE("a file whose content does not match its extension throws InputError", "[unit][image]") {
+    TemporaryFolder folder;
+    write_image(folder.file("radiance.hdr"), varied_image());
+    std::filesystem::copy_file(folder.file("radiance.hdr"), folder.file("radiance.png"));
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("radiance.png")); }),
+               Contains(folder.file("radiance.png")) && Contains(".hdr"));
+
+    write_image(folder.file("picture.png"), varied_image());
+    std::filesystem::copy_file(folder.file("picture.png"), folder.file("picture.hdr"));
+    std::filesystem::copy_file(folder.file("picture.png"), folder.file("picture.exr"));
+    std::filesystem::copy_file(folder.file("picture.png"), folder.file("picture.pfm"));
+    for (const std::string name : {"picture.hdr", "picture.exr", "picture.pfm"}) {
+        CHECK_THAT(input_error_message([&] { read_image(folder.file(name)); }), Contains(folder.file(name)));
+    }
+}
+
+TEST_CASE("corrupted bytes never crash a reader: it decodes or throws InputError", "[unit][image]") {
+    TemporaryFolder folder;
+    std::mt19937 random(20240613);  // fixed seed: the same corruptions on every run
+    for (const std::string name : {"noisy.exr", "noisy.pfm", "noisy.hdr", "noisy.png"}) {
+        INFO(name);
+        write_image(folder.file(name), varied_image());
+        const std::vector<unsigned char> whole = read_bytes(folder.file(name));
+        std::uniform_int_distribution<std::size_t> position(0, whole.size() - 1);
+        for (int trial = 0; trial < 150; ++trial) {
+            std::vector<unsigned char> bytes = whole;
+            const int changes = 1 + trial % 4;
+            for (int i = 0; i < changes; ++i) bytes[position(random)] = static_cast<unsigned char>(random());
+            write_bytes(folder.file(name), bytes);
+            read_or_input_error(folder.file(name));
+        }
+        for (std::size_t kept = 1; kept < whole.size(); kept += 1 + whole.size() / 97) {
+            write_bytes(folder.file(name), std::vector<unsigned char>(whole.begin(), whole.begin() + long(kept)));
+            read_or_input_error(folder.file(name));
+        }
+    }
+}
