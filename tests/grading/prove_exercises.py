@@ -1,0 +1,411 @@
+#!/usr/bin/env python3
+"""Prove that every exercise's grading test fails on its stub and passes on its solution.
+
+    tests/grading/prove_exercises.py --source . --build-dir build [--work DIR] [--isolate]
+
+1. Every exercise region has a grading test of the same name in `exercise_tests`, and every
+   grading test has a region (`exercise_tests --list-test-names-only`).
+2. In the solution build (--build-dir, already built), every grading test passes.
+3. A student copy with every region stubbed is made in WORK/source, configured in
+   WORK/build (Release, same generator as the solution build) and only the
+   `exercise_tests` target is built; there every grading test must fail, and its output
+   must show its own stub's ExerciseNotImplemented message.
+
+A test that fails on the student copy only through another exercise's stub (it calls that
+exercise first) has not shown that it catches its own stub. With --isolate, such an
+exercise is checked again on a copy where it alone is stubbed (an incremental rebuild);
+without it, that is reported as a violation.
+
+Each test runs in its own process, from its build folder, with a time limit. WORK is kept
+between runs (default: BUILD_DIR/grading-student), so a second run rebuilds only what
+changed. Exit status 0 when everything is proven, 1 on any violation, 2 on bad arguments.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+sys.dont_write_bytecode = True  # keep __pycache__ out of the source tree
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import exercises  # noqa: E402  (the shared parsing modules beside this script)
+import make_student_copy  # noqa: E402
+
+TEST_TARGET = "exercise_tests"
+
+# Cache entries of the solution build that the student build should share.
+SHARED_CACHE_ENTRIES = (
+    "CMAKE_MAKE_PROGRAM", "CMAKE_CXX_COMPILER", "CMAKE_C_COMPILER",
+    "CMAKE_CXX_COMPILER_LAUNCHER", "CMAKE_C_COMPILER_LAUNCHER", "CMAKE_CXX_FLAGS",
+    "CMAKE_PREFIX_PATH", "CMAKE_TOOLCHAIN_FILE", "FREEZERAY_NATIVE",
+)
+
+
+@dataclass
+class Run:
+    """One run of one grading test."""
+
+    passed: bool
+    stubs: list[str] = field(default_factory=list)  # exercises whose stub message appeared
+    timed_out: bool = False
+    output: str = ""
+
+    def describe(self) -> str:
+        """'pass', 'FAIL', 'FAIL (timeout)'..., for the table."""
+        if self.timed_out:
+            return "FAIL (timeout)"
+        return "pass" if self.passed else "FAIL"
+
+
+@dataclass
+class Proof:
+    """Everything learned about one exercise (or one grading test without a region)."""
+
+    name: str
+    has_region: bool
+    has_test: bool
+    solution: Run | None = None
+    stubbed: Run | None = None
+    isolated: Run | None = None
+    violations: list[str] = field(default_factory=list)
+
+    def stub_column(self) -> str:
+        """What happened on the student copy, in a few words."""
+        run = self.isolated or self.stubbed
+        if run is None:
+            return "-"
+        if run.passed:
+            return "pass"
+        where = " alone" if self.isolated else ""
+        if self.name in run.stubs:
+            return f"FAIL (its stub{where})"
+        if self.isolated is not None:
+            return "FAIL (stubbed alone)"
+        if run.stubs:
+            return f"FAIL (via {run.stubs[0]})"
+        return run.describe() + " (no stub message)"
+
+
+# --- Small helpers ----------------------------------------------------------------------------
+
+def read_cmake_cache(build_dir: Path) -> dict[str, str]:
+    """The entries of build_dir/CMakeCache.txt, NAME -> value (types dropped)."""
+    entries = {}
+    cache = build_dir / "CMakeCache.txt"
+    if not cache.is_file():
+        return entries
+    for line in cache.read_text(encoding="utf-8", errors="replace").splitlines():
+        if not line or line.startswith(("#", "//")) or "=" not in line:
+            continue
+        key, value = line.split("=", 1)
+        entries[key.split(":", 1)[0]] = value
+    return entries
+
+
+def find_test_executable(build_dir: Path) -> Path | None:
+    """The exercise_tests executable somewhere in build_dir (the shallowest one)."""
+    candidates = [path for path in build_dir.rglob(TEST_TARGET)
+                  if path.is_file() and os.access(path, os.X_OK) and "grading-student" not in path.parts]
+    return min(candidates, key=lambda path: len(path.parts)) if candidates else None
+
+
+def catch_test_spec(name: str) -> str:
+    """A Catch2 test spec that matches exactly this test name (escapes , [ ] and backslash)."""
+    for character in "\\,[]":
+        name = name.replace(character, "\\" + character)
+    return name
+
+
+def print_step(message: str) -> None:
+    """A progress line, flushed so it interleaves well with the build's output."""
+    print(f"-- {message}", flush=True)
+
+
+def tail(text: str, lines: int = 30) -> str:
+    """The last lines of a long output."""
+    return "\n".join(text.splitlines()[-lines:])
+
+
+def build_errors(log: str) -> str:
+    """The compiler's error lines of a build log (or its end when there are none)."""
+    errors = [line for line in log.splitlines() if "error" in line.lower()]
+    return "\n".join(errors[:20]) if errors else tail(log, 40)
+
+
+def regions_named_in(log: str, copy: Path, regions: list[exercises.Region]) -> str:
+    """A hint listing the exercise regions in the files a build log's errors point at."""
+    prefix = str(copy.resolve()) + os.sep
+    suspects = []
+    for region in regions:
+        if prefix + str(region.path) in log:
+            suspects.append(f"{region.name} ({region.location})")
+    return ("\nexercise regions in the files with errors: " + ", ".join(suspects)) if suspects else ""
+
+
+# --- Running grading tests --------------------------------------------------------------------
+
+def list_tests(executable: Path, cwd: Path) -> list[str]:
+    """The test names in a Catch2 executable (--list-test-names-only)."""
+    result = subprocess.run([str(executable), "--list-test-names-only"], cwd=cwd,
+                            capture_output=True, text=True)
+    # Catch2 v2 exits with the number of tests listed; only a signal means it failed.
+    if result.returncode < 0:
+        raise RuntimeError(f"{executable} --list-test-names-only crashed:\n{tail(result.stderr)}")
+    return [line.strip() for line in result.stdout.splitlines() if line.strip()]
+
+
+def run_test(executable: Path, name: str, cwd: Path, timeout: float) -> Run:
+    """Run one grading test in its own process; note which stubs' messages it printed."""
+    command = [str(executable), catch_test_spec(name), "--reporter", "xml"]
+    try:
+        result = subprocess.run(command, cwd=cwd, capture_output=True, text=True,
+                                errors="replace", timeout=timeout)
+    except subprocess.TimeoutExpired as expired:
+        output = (expired.stdout or b"").decode(errors="replace") if isinstance(expired.stdout, bytes) \
+            else (expired.stdout or "")
+        return Run(passed=False, stubs=stubs_in(output), timed_out=True, output=output)
+    output = result.stdout + result.stderr
+    return Run(passed=result.returncode == 0, stubs=stubs_in(output), output=output)
+
+
+def stubs_in(output: str) -> list[str]:
+    """The exercises whose ExerciseNotImplemented message appears in output, in order."""
+    names = []
+    for match in exercises.NOT_IMPLEMENTED.finditer(output):
+        if match["name"] not in names:
+            names.append(match["name"])
+    return names
+
+
+# --- The student build ------------------------------------------------------------------------
+
+def configure_student_build(source: Path, build: Path, solution_cache: dict[str, str]) -> None:
+    """Configure the student copy like the solution build (same generator, Release, no -Werror)."""
+    generator = solution_cache.get("CMAKE_GENERATOR")
+    existing = read_cmake_cache(build)
+    if existing and (existing.get("CMAKE_GENERATOR") != generator
+                     or Path(existing.get("CMAKE_HOME_DIRECTORY", "")) != source.resolve()):
+        print_step(f"removing {build}: it was configured differently")
+        shutil.rmtree(build)
+    command = ["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+               # A stub leaves parameters unused: warnings, which must not stop the build.
+               "-DFREEZERAY_WERROR=OFF"]
+    if generator:
+        command += ["-G", generator]
+    for entry in SHARED_CACHE_ENTRIES:
+        if solution_cache.get(entry):
+            command.append(f"-D{entry}={solution_cache[entry]}")
+    print_step("configuring the student copy: " + " ".join(command))
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        raise RuntimeError("configuring the student copy failed:\n" + tail(result.stdout + result.stderr))
+
+
+def build_student_tests(build: Path, jobs: int) -> None:
+    """Build only the exercise_tests target of the student copy."""
+    command = ["cmake", "--build", str(build), "--target", TEST_TARGET, "--config", "Release",
+               "--parallel", str(jobs)]
+    print_step("building the student copy: " + " ".join(command))
+    started = time.monotonic()
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        raise RuntimeError(
+            "building the student copy failed: a stub must compile wherever its region is "
+            "(does a region declare a name used after `// END EXERCISE`, or sit in a constexpr "
+            "or consteval function?)\n" + build_errors(result.stdout + result.stderr))
+    print_step(f"built in {time.monotonic() - started:.0f} s")
+
+
+def student_executable(solution_build: Path, solution_executable: Path, student_build: Path) -> Path:
+    """exercise_tests in the student build: same place as in the solution build, or searched for."""
+    try:
+        relative = solution_executable.resolve().relative_to(solution_build.resolve())
+        if (student_build / relative).is_file():
+            return student_build / relative
+    except ValueError:
+        pass
+    found = find_test_executable(student_build)
+    if found is None:
+        raise RuntimeError(f"the student build in {student_build} has no {TEST_TARGET} executable")
+    return found
+
+
+def refresh_copy(source: Path, work: Path, only: str | None = None) -> Path:
+    """Make (or bring up to date) the student copy in work/source; return its path."""
+    copy = work / "source"
+    counts = make_student_copy.make_student_copy(source, copy, only=only, update=True)
+    print_step(f"student copy in {copy}: {counts['stubbed']} exercise(s) stubbed, "
+               f"{counts['written']} file(s) rewritten")
+    return copy
+
+
+# --- The proof --------------------------------------------------------------------------------
+
+def match_tests_to_regions(regions: list[exercises.Region], tests: list[str]) -> dict[str, Proof]:
+    """Step 1: one Proof per exercise or test; a region without test or test without region is a violation."""
+    proofs: dict[str, Proof] = {}
+    region_at = {region.name: region for region in regions}
+    for name in sorted(set(region_at) | set(tests)):
+        proof = Proof(name, has_region=name in region_at, has_test=name in tests)
+        if not proof.has_test:
+            proof.violations.append(f"{region_at[name].location}: exercise {name} has no grading test "
+                                    f'(TEST_CASE("{name}", "[exercise]") in tests/exercises/)')
+        if not proof.has_region:
+            proof.violations.append(f"grading test \"{name}\" has no region "
+                                    f"(`// EXERCISE({name}): ...` under common/ or chapters/)")
+        proofs[name] = proof
+    return proofs
+
+
+def check_solution(proofs: dict[str, Proof], executable: Path, build_dir: Path, timeout: float) -> None:
+    """Step 2: every grading test passes in the solution build."""
+    for proof in proofs.values():
+        if not proof.has_test:
+            continue
+        proof.solution = run_test(executable, proof.name, build_dir, timeout)
+        if not proof.solution.passed:
+            proof.violations.append(f"{proof.name}: fails on the solution "
+                                    f"({proof.solution.describe()}):\n{tail(proof.solution.output, 15)}")
+
+
+def check_stubbed(proofs: dict[str, Proof], executable: Path, build_dir: Path, timeout: float) -> list[str]:
+    """Step 3: every grading test fails on the all-stubbed copy. Returns the exercises to isolate."""
+    to_isolate = []
+    for proof in proofs.values():
+        if not (proof.has_test and proof.has_region):
+            continue
+        proof.stubbed = run_test(executable, proof.name, build_dir, timeout)
+        if proof.stubbed.passed:
+            proof.violations.append(f"{proof.name}: passes on the stub, so the test does not check the exercise")
+        elif proof.name not in proof.stubbed.stubs:
+            to_isolate.append(proof.name)
+    return to_isolate
+
+
+def isolate(proofs: dict[str, Proof], names: list[str], source: Path, work: Path, solution_build: Path,
+            solution_executable: Path, jobs: int, timeout: float) -> None:
+    """Check each named exercise on a copy where it alone is stubbed (incremental rebuilds)."""
+    student_build = work / "build"
+    for name in names:
+        print_step(f"isolating {name}: stubbing it alone")
+        refresh_copy(source, work, only=name)
+        build_student_tests(student_build, jobs)
+        executable = student_executable(solution_build, solution_executable, student_build)
+        proofs[name].isolated = run_test(executable, name, student_build, timeout)
+        if proofs[name].isolated.passed:
+            proofs[name].violations.append(f"{name}: passes when it alone is stubbed, so the test "
+                                           "does not check the exercise")
+
+
+def report_unisolated(proofs: dict[str, Proof], names: list[str]) -> None:
+    """Without --isolate, a test that never reached its own stub is not proven."""
+    for name in names:
+        run = proofs[name].stubbed
+        cause = f"through {run.stubs[0]}'s stub" if run.stubs else "without any stub message"
+        proofs[name].violations.append(
+            f"{name}: fails on the student copy only {cause}; its own stub was never reached. "
+            "Make the test call its exercise first, or run with --isolate")
+
+
+def format_table(proofs: dict[str, Proof]) -> str:
+    """The proof as a table: exercise, solution, stub, verdict."""
+    width = max([len("exercise"), *(len(name) for name in proofs)]) + 2
+    lines = [f"{'exercise':{width}}{'solution':10}{'stub':34}verdict", "-" * (width + 52)]
+    for proof in proofs.values():
+        solution = proof.solution.describe() if proof.solution else "-"
+        checked = proof.stubbed is not None or not (proof.has_test and proof.has_region)
+        verdict = "VIOLATION" if proof.violations else ("ok" if checked else "not checked")
+        if not proof.has_test:
+            verdict += " (no test)"
+        elif not proof.has_region:
+            verdict += " (no region)"
+        lines.append(f"{proof.name:{width}}{solution:10}{proof.stub_column():34}{verdict}")
+    return "\n".join(lines)
+
+
+def prove(args: argparse.Namespace) -> int:
+    """Run the three steps; print the table and the violations. Returns the exit status."""
+    source = args.source.resolve()
+    build_dir = args.build_dir.resolve()
+    work = (args.work or build_dir / "grading-student").resolve()
+    regions = exercises.find_regions(source)
+    executable = args.exercise_tests or find_test_executable(build_dir)
+    if executable is None or not Path(executable).is_file():
+        print(f"prove: error: no {TEST_TARGET} in {build_dir}; build it first: "
+              f"cmake --build {args.build_dir} --target {TEST_TARGET}", file=sys.stderr)
+        return 2
+    executable = Path(executable).resolve()
+
+    print_step(f"{len(regions)} exercise region(s) in {source}; tests from {executable}")
+    proofs = match_tests_to_regions(regions, list_tests(executable, build_dir))
+    print_step("running the grading tests on the solution")
+    check_solution(proofs, executable, build_dir, args.test_timeout)
+
+    problems = []
+    if any(proof.has_test and proof.has_region for proof in proofs.values()):
+        try:
+            copy = refresh_copy(source, work)
+            configure_student_build(copy, work / "build", read_cmake_cache(build_dir))
+            build_student_tests(work / "build", args.jobs)
+            stubbed_executable = student_executable(build_dir, executable, work / "build")
+            print_step("running the grading tests on the stubs")
+            to_isolate = check_stubbed(proofs, stubbed_executable, work / "build", args.test_timeout)
+            if to_isolate and args.isolate:
+                isolate(proofs, to_isolate, source, work, build_dir, executable, args.jobs, args.test_timeout)
+            else:
+                report_unisolated(proofs, to_isolate)
+        except RuntimeError as error:
+            problems.append(str(error) + regions_named_in(str(error), work / "source", regions))
+
+    print()
+    print(format_table(proofs))
+    violations = problems + [violation for proof in proofs.values() for violation in proof.violations]
+    print()
+    if violations:
+        for violation in violations:
+            print(f"violation: {violation}")
+        print(f"\n{len(violations)} violation(s): the grading scheme is not proven")
+        return 1
+    print(f"proven: all {len(proofs)} grading test(s) pass on their solution and fail on their stub")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(
+        description="Prove that every grading test fails on its stub and passes on its solution.")
+    parser.add_argument("--source", type=Path, default=exercises.repository_root(),
+                        help="the repository with the solutions (default: the one holding this script)")
+    parser.add_argument("--build-dir", type=Path, required=True,
+                        help="the solution build folder, with exercise_tests built")
+    parser.add_argument("--exercise-tests", type=Path, metavar="PATH",
+                        help="the exercise_tests executable (default: found in --build-dir)")
+    parser.add_argument("--work", type=Path, metavar="DIR",
+                        help="where the student copy and its build go (default: BUILD_DIR/grading-student)")
+    parser.add_argument("--jobs", type=int, default=2, help="parallel build jobs (default 2)")
+    parser.add_argument("--test-timeout", type=float, default=300, metavar="SECONDS",
+                        help="time limit for one grading test (default 300)")
+    parser.add_argument("--isolate", action="store_true",
+                        help="re-check, with it alone stubbed, an exercise whose test failed only "
+                             "through another exercise's stub")
+    args = parser.parse_args(argv)
+    if not args.build_dir.is_dir():
+        parser.error(f"build folder {args.build_dir} does not exist")
+    try:
+        return prove(args)
+    except exercises.MarkerError as error:
+        print(error, file=sys.stderr)
+        print("prove: error: the exercise markers are not well formed", file=sys.stderr)
+        return 1
+    except RuntimeError as error:
+        print(f"prove: error: {error}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,466 @@
+#!/usr/bin/env python3
+"""Unit tests of the grading scripts, on tiny synthetic trees in temporary folders.
+
+    python3 tests/grading/test_grading_tools.py        (or: python3 -m unittest ...)
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import textwrap
+import unittest
+from contextlib import redirect_stderr, redirect_stdout
+from pathlib import Path
+
+sys.dont_write_bytecode = True
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import exercises  # noqa: E402
+import grade  # noqa: E402
+import make_student_copy  # noqa: E402
+import prove_exercises  # noqa: E402
+
+ERROR_HPP = """\
+#pragma once
+#include <stdexcept>
+namespace freezeray {
+class ExerciseNotImplemented : public std::logic_error {
+public:
+    explicit ExerciseNotImplemented(const std::string& e) : std::logic_error("exercise " + e) {}
+};
+}
+"""
+
+WARPS_HPP = """\
+#pragma once
+#include "freezeray/error.hpp"
+namespace freezeray {
+double twice(double x);
+}
+"""
+
+# Includes error.hpp through warps.hpp: needs no extra include.
+WARPS_CPP = """\
+#include "freezeray/warps.hpp"
+
+namespace freezeray {
+
+double twice(double x) {
+    // EXERCISE(ch01/twice): return twice x
+    double result = x + x;
+    return result;
+    // END EXERCISE
+}
+
+}  // namespace freezeray
+"""
+
+# Includes nothing that brings error.hpp: gets the include after its last #include.
+ESTIMATOR_CPP = """\
+#include <cmath>
+#include <vector>
+
+namespace freezeray {
+
+double four_times(double x) {
+    // EXERCISE(ch01/four-times): return four times x
+    return 4 * x;
+    // END EXERCISE
+}
+
+}  // namespace freezeray
+"""
+
+CHAPTER_02_CPP = """\
+#include "freezeray/warps.hpp"
+
+namespace freezeray {
+
+float mirror(float x) {
+    float y = x;
+    // EXERCISE(ch02/mirror): return minus y
+    return -y;
+    // END EXERCISE
+}
+
+}  // namespace freezeray
+"""
+
+GRADING_TESTS = """\
+#include <catch2/catch.hpp>
+TEST_CASE("ch01/twice", "[exercise]") {}
+TEST_CASE("ch01/four-times", "[exercise]") {}
+TEST_CASE( "ch02/mirror", "[exercise]") {}
+"""
+
+
+def write_tree(root: Path, files: dict[str, str]) -> None:
+    """Create each file (path relative to root) with its text."""
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+
+
+def synthetic_tree(root: Path) -> None:
+    """A tiny FreezeRay-like tree with three exercises in two chapters."""
+    write_tree(root, {
+        "CMakeLists.txt": "project(Tiny)\n",
+        "common/include/freezeray/error.hpp": ERROR_HPP,
+        "common/include/freezeray/warps.hpp": WARPS_HPP,
+        "common/src/warps.cpp": WARPS_CPP,
+        "chapters/01-naive/src/estimator.cpp": ESTIMATOR_CPP,
+        "chapters/02-importance/src/mirror.cpp": CHAPTER_02_CPP,
+        "tests/exercises/exercises.cpp": GRADING_TESTS,
+        "tests/grading/points.json": '{"default_points": 1, "points": {"ch02/mirror": 3}}\n',
+        "build/CMakeCache.txt": "CMAKE_GENERATOR:INTERNAL=Ninja\n",
+        "build/huge.o": "object code",
+    })
+
+
+class TreeTestCase(unittest.TestCase):
+    """A test with a fresh synthetic tree in self.root."""
+
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory(prefix="freezeray-grading-test-")
+        self.root = Path(self.folder.name) / "repo"
+        synthetic_tree(self.root)
+
+    def tearDown(self):
+        self.folder.cleanup()
+
+    def copy(self, *options: str) -> Path:
+        """Run make_student_copy.py's main on the tree; return the destination."""
+        destination = Path(self.folder.name) / "student"
+        with redirect_stdout(io.StringIO()):
+            status = make_student_copy.main([str(self.root), str(destination), *options])
+        self.assertEqual(status, 0)
+        return destination
+
+
+class FindingRegions(TreeTestCase):
+    def test_finds_every_region_with_its_lines_and_description(self):
+        regions = {region.name: region for region in exercises.find_regions(self.root)}
+        self.assertEqual(sorted(regions), ["ch01/four-times", "ch01/twice", "ch02/mirror"])
+        twice = regions["ch01/twice"]
+        self.assertEqual(twice.path, Path("common/src/warps.cpp"))
+        self.assertEqual((twice.start, twice.end), (6, 9))
+        self.assertEqual(twice.chapter, "ch01")
+        self.assertEqual(twice.description, "return twice x")
+        self.assertEqual(twice.indent, "    ")
+
+    def test_the_synthetic_tree_passes_the_check(self):
+        self.assertEqual(exercises.check_tree(self.root), [])
+        with redirect_stdout(io.StringIO()) as output:
+            self.assertEqual(exercises.main(["--root", str(self.root), "--check"]), 0)
+        self.assertIn("3 exercise region(s) in 3 file(s)", output.getvalue())
+
+
+class MalformedMarkers(unittest.TestCase):
+    """Each mistake is reported with the file and line where it is."""
+
+    def problems(self, body: str, path: str = "common/src/bad.cpp") -> list[str]:
+        return exercises.parse_file(textwrap.dedent(body), Path(path))[1]
+
+    def assert_reported(self, problems: list[str], location: str, words: str):
+        self.assertTrue(any(p.startswith(location) and words in p for p in problems),
+                        f"expected '{location}: ...{words}...' in {problems}")
+
+    def test_malformed_name(self):
+        problems = self.problems("""\
+            void f() {
+                // EXERCISE(chapter1/Bad_Name): something
+                // END EXERCISE
+            }
+            """)
+        self.assert_reported(problems, "common/src/bad.cpp:2:", "malformed exercise name 'chapter1/Bad_Name'")
+
+    def test_missing_colon_or_description(self):
+        self.assert_reported(self.problems("// EXERCISE(ch01/a) no colon\n// END EXERCISE\n"),
+                             "common/src/bad.cpp:1:", "malformed EXERCISE marker")
+        self.assert_reported(self.problems("// EXERCISE(ch01/a):\nx;\n// END EXERCISE\n"),
+                             "common/src/bad.cpp:1:", "no description")
+
+    def test_end_without_start(self):
+        self.assert_reported(self.problems("int x;\n// END EXERCISE\n"),
+                             "common/src/bad.cpp:2:", "without a matching EXERCISE")
+
+    def test_start_never_closed(self):
+        self.assert_reported(self.problems("// EXERCISE(ch01/a): do it\nint x;\n"),
+                             "common/src/bad.cpp:1:", "never closed")
+
+    def test_nested_regions(self):
+        problems = self.problems("""\
+            // EXERCISE(ch01/outer): outer
+            // EXERCISE(ch01/inner): inner
+            x;
+            // END EXERCISE
+            // END EXERCISE
+            """)
+        self.assert_reported(problems, "common/src/bad.cpp:2:", "nested inside EXERCISE ch01/outer")
+
+    def test_marker_after_code(self):
+        self.assert_reported(self.problems("x = 1;  // EXERCISE(ch01/a): do it\n"),
+                             "common/src/bad.cpp:1:", "malformed EXERCISE marker")
+        self.assert_reported(self.problems("// EXERCISE(ch01/a): do it\nx;\n}  // END EXERCISE\n"),
+                             "common/src/bad.cpp:3:", "malformed END EXERCISE marker")
+
+    def test_empty_region(self):
+        self.assert_reported(self.problems("// EXERCISE(ch01/a): do it\n// END EXERCISE\n"),
+                             "common/src/bad.cpp:1:", "is empty")
+
+    def test_chapter_must_match_the_chapter_folder(self):
+        problems = self.problems("// EXERCISE(ch02/a): do it\nx;\n// END EXERCISE\n",
+                                 path="chapters/01-naive/src/a.cpp")
+        self.assert_reported(problems, "chapters/01-naive/src/a.cpp:1:", "chapter 01's folder")
+
+
+class CheckingTheTree(TreeTestCase):
+    def test_duplicate_names_name_both_places(self):
+        write_tree(self.root, {"chapters/01-naive/src/again.cpp":
+                               "void g() {\n    // EXERCISE(ch01/twice): again\n    x;\n    // END EXERCISE\n}\n"})
+        problems = exercises.check_tree(self.root)
+        self.assertTrue(any("duplicate exercise name ch01/twice" in p and "chapters/01-naive/src/again.cpp:2" in p
+                            and "common/src/warps.cpp:6" in p for p in problems), problems)
+        with self.assertRaises(exercises.MarkerError):
+            exercises.find_regions(self.root)
+
+    def test_region_without_test_and_test_without_region(self):
+        write_tree(self.root, {"tests/exercises/more.cpp": 'TEST_CASE("ch01/ghost", "[exercise]") {}\n'})
+        (self.root / "tests/exercises/exercises.cpp").write_text(
+            GRADING_TESTS.replace('TEST_CASE("ch01/twice", "[exercise]") {}\n', ""))
+        problems = exercises.check_tree(self.root)
+        self.assertTrue(any(p.startswith("common/src/warps.cpp:6:") and "no grading test" in p for p in problems))
+        self.assertTrue(any(p.startswith("tests/exercises/more.cpp:1:") and "ch01/ghost" in p for p in problems))
+
+    def test_points_for_an_unknown_exercise(self):
+        (self.root / "tests/grading/points.json").write_text('{"points": {"ch09/nothing": 2}}')
+        problems = exercises.check_tree(self.root)
+        self.assertTrue(any("ch09/nothing" in p for p in problems), problems)
+
+    def test_check_exit_status_and_messages(self):
+        write_tree(self.root, {"common/src/broken.cpp": "// END EXERCISE\n"})
+        with redirect_stderr(io.StringIO()) as errors:
+            self.assertEqual(exercises.main(["--root", str(self.root)]), 1)
+        self.assertIn("common/src/broken.cpp:1:", errors.getvalue())
+
+
+class StudentCopy(TreeTestCase):
+    def test_every_region_is_stubbed_and_markers_kept(self):
+        copy = self.copy()
+        text = (copy / "common/src/warps.cpp").read_text()
+        self.assertIn("    // EXERCISE(ch01/twice): return twice x\n"
+                      '    throw ::freezeray::ExerciseNotImplemented("ch01/twice");\n'
+                      "    // END EXERCISE\n", text)
+        self.assertNotIn("x + x", text)
+        self.assertNotIn("4 * x", (copy / "chapters/01-naive/src/estimator.cpp").read_text())
+        self.assertNotIn("return -y", (copy / "chapters/02-importance/src/mirror.cpp").read_text())
+        # Lines outside the regions are untouched.
+        self.assertIn("    float y = x;\n", (copy / "chapters/02-importance/src/mirror.cpp").read_text())
+
+    def test_error_header_included_only_where_missing(self):
+        copy = self.copy()
+        warps = (copy / "common/src/warps.cpp").read_text()
+        self.assertEqual(warps.count("#include"), 1, "warps.hpp already brings error.hpp")
+        estimator = (copy / "chapters/01-naive/src/estimator.cpp").read_text().splitlines()
+        self.assertEqual(estimator[:3], ["#include <cmath>", "#include <vector>",
+                                         '#include "freezeray/error.hpp"'])
+
+    def test_include_added_to_a_file_without_includes(self):
+        text = make_student_copy.add_error_include("#pragma once\nint f();\n")
+        self.assertEqual(text, '#pragma once\n#include "freezeray/error.hpp"\nint f();\n')
+        self.assertEqual(make_student_copy.add_error_include("int f();\n"),
+                         '#include "freezeray/error.hpp"\nint f();\n')
+
+    def test_only_one_exercise(self):
+        copy = self.copy("--only", "ch01/four-times")
+        self.assertIn("ExerciseNotImplemented", (copy / "chapters/01-naive/src/estimator.cpp").read_text())
+        self.assertIn("x + x", (copy / "common/src/warps.cpp").read_text())
+        self.assertIn("return -y", (copy / "chapters/02-importance/src/mirror.cpp").read_text())
+
+    def test_one_chapter(self):
+        copy = self.copy("--chapter", "ch02")
+        self.assertIn("ExerciseNotImplemented", (copy / "chapters/02-importance/src/mirror.cpp").read_text())
+        self.assertIn("x + x", (copy / "common/src/warps.cpp").read_text())
+
+    def test_unknown_exercise_is_an_error(self):
+        with redirect_stderr(io.StringIO()) as errors:
+            status = make_student_copy.main([str(self.root), str(Path(self.folder.name) / "s"),
+                                             "--only", "ch01/nope"])
+        self.assertEqual(status, 1)
+        self.assertIn("no exercise named ch01/nope", errors.getvalue())
+
+    def test_build_folders_are_not_copied(self):
+        copy = self.copy()
+        self.assertFalse((copy / "build").exists())
+        self.assertTrue((copy / "tests/exercises/exercises.cpp").is_file())
+
+    def test_refuses_a_non_empty_destination_and_updates_a_copy(self):
+        copy = self.copy()
+        with self.assertRaises(SystemExit):
+            make_student_copy.make_student_copy(self.root, copy)
+        untouched = (copy / "common/src/warps.cpp").stat().st_mtime_ns
+        (self.root / "CMakeLists.txt").unlink()
+        write_tree(copy, {"build/CMakeCache.txt": "", "out/CMakeCache.txt": "", "stale/old.txt": ""})
+        counts = make_student_copy.make_student_copy(self.root, copy, update=True)
+        self.assertEqual(counts["written"], 0)
+        self.assertEqual(counts["removed"], 2)
+        self.assertFalse((copy / "CMakeLists.txt").exists())
+        self.assertFalse((copy / "stale").exists())
+        self.assertTrue((copy / "build/CMakeCache.txt").exists(), "a build folder in the copy is kept")
+        self.assertTrue((copy / "out/CMakeCache.txt").exists(), "a build tree in the copy is kept")
+        self.assertEqual((copy / "common/src/warps.cpp").stat().st_mtime_ns, untouched)
+
+    @unittest.skipUnless(shutil.which("git"), "git is not installed")
+    def test_git_checkout_copies_tracked_and_unignored_files(self):
+        write_tree(self.root, {".gitignore": "/build*/\n*.log\n", "notes.log": "ignored", "new.txt": "untracked"})
+        subprocess.run(["git", "init", "-q", str(self.root)], check=True)
+        subprocess.run(["git", "-C", str(self.root), "add", "CMakeLists.txt", "common", "chapters"], check=True)
+        copy = self.copy()
+        self.assertTrue((copy / "new.txt").is_file())
+        self.assertTrue((copy / "tests/exercises/exercises.cpp").is_file())
+        self.assertFalse((copy / "notes.log").exists())
+        self.assertFalse((copy / "build").exists())
+        self.assertIn("ExerciseNotImplemented", (copy / "common/src/warps.cpp").read_text())
+
+
+CANNED_JUNIT = """\
+<?xml version="1.0" encoding="UTF-8"?>
+<testsuite name="(empty)" tests="4" failures="2" disabled="0" skipped="0" hostname="" time="0">
+  <testcase name="exercise:ch01/twice" classname="exercise:ch01/twice" time="0.002" status="run">
+    <system-out>All tests passed (1 assertion in 1 test case)</system-out>
+  </testcase>
+  <testcase name="exercise: ch01/four-times" classname="exercise: ch01/four-times" time="0.002" status="fail">
+    <failure message=""/>
+    <system-out>due to unexpected exception with message:
+  exercise ch01/four-times is not implemented yet (see the chapter&apos;s book page)</system-out>
+  </testcase>
+  <testcase name="exercise:ch02/mirror" classname="exercise:ch02/mirror" time="0.002" status="fail">
+    <failure message=""/>
+    <system-out>  exercise ch01/twice is not implemented yet</system-out>
+  </testcase>
+  <testcase name="exercise:ch02/other" classname="exercise:ch02/other" time="0.002" status="fail">
+    <failure message="Timeout"/>
+    <system-out></system-out>
+  </testcase>
+</testsuite>
+"""
+
+
+class GradeReport(unittest.TestCase):
+    def test_parses_ctest_junit_output(self):
+        outcomes = grade.parse_ctest_junit(CANNED_JUNIT)
+        self.assertEqual(outcomes["ch01/twice"].status, "pass")
+        self.assertEqual((outcomes["ch01/four-times"].status, outcomes["ch01/four-times"].detail),
+                         ("fail", "not implemented"))
+        self.assertEqual(outcomes["ch02/mirror"].detail, "needs ch01/twice")
+        self.assertEqual(outcomes["ch02/other"].detail, "timeout")
+
+    def test_table_totals_per_chapter_and_overall(self):
+        outcomes = grade.parse_ctest_junit(CANNED_JUNIT)
+        rows = grade.build_rows(outcomes, ["ch01/twice", "ch01/four-times", "ch02/mirror", "ch03/untested"],
+                                default_points=1, points={"ch02/mirror": 3}, chapter=None)
+        report = grade.format_report(rows)
+        lines = {line.split()[0] + (" " + line.split()[1] if line.split()[1] == "total" else ""): line
+                 for line in report.splitlines() if line.strip() and not line.startswith("-")}
+        self.assertIn("1/1", lines["ch01/twice"])
+        self.assertIn("FAIL (not implemented)", lines["ch01/four-times"])
+        self.assertIn("0/3", lines["ch02/mirror"])
+        self.assertIn("no test", lines["ch03/untested"])
+        self.assertIn("1/2", lines["ch01 total"])
+        self.assertIn("0/4", lines["ch02 total"])
+        self.assertIn("1/7", lines["overall"])
+        self.assertIn("(1 of 5 exercises pass)", lines["overall"])
+
+    def test_chapter_filter(self):
+        rows = grade.build_rows(grade.parse_ctest_junit(CANNED_JUNIT), [], 1, {}, chapter="ch02")
+        self.assertEqual([row.exercise for row in rows], ["ch02/mirror", "ch02/other"])
+
+    def test_ctest_command_selects_the_chapter(self):
+        command = grade.ctest_command(Path("build"), Path("/tmp/x.xml"), "ch01", jobs=1)
+        self.assertEqual(command[:5], ["ctest", "--test-dir", "build", "-L", "exercise"])
+        self.assertIn("^exercise: ?ch01/", command)
+
+    def test_missing_build_folder_is_an_error(self):
+        with redirect_stderr(io.StringIO()) as errors:
+            self.assertEqual(grade.main(["--build-dir", "/nonexistent/build"]), 2)
+        self.assertIn("does not exist", errors.getvalue())
+
+
+FAKE_TESTS = """\
+#!/usr/bin/env python3
+# A stand-in for exercise_tests: lists two tests; 'ch01/a' fails through its stub.
+import sys
+if "--list-test-names-only" in sys.argv:
+    print("ch01/a\\nch01/b")
+    sys.exit(2)
+if sys.argv[1] == "ch01/a":
+    print("<Exception>exercise ch01/a is not implemented yet</Exception>")
+    sys.exit(1)
+if sys.argv[1] == "ch01/b":
+    print("<Exception>exercise ch01/a is not implemented yet</Exception>", file=sys.stderr)
+    sys.exit(1)
+sys.exit(3)
+"""
+
+
+class ProofParts(unittest.TestCase):
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory(prefix="freezeray-prove-test-")
+        self.executable = Path(self.folder.name) / "exercise_tests"
+        self.executable.write_text(FAKE_TESTS)
+        self.executable.chmod(0o755)
+
+    def tearDown(self):
+        self.folder.cleanup()
+
+    def region(self, name: str) -> exercises.Region:
+        return exercises.Region(name, "do it", Path("common/src/a.cpp"), 1, 3, "")
+
+    def test_lists_and_runs_tests_one_per_process(self):
+        folder = Path(self.folder.name)
+        self.assertEqual(prove_exercises.list_tests(self.executable, folder), ["ch01/a", "ch01/b"])
+        run = prove_exercises.run_test(self.executable, "ch01/a", folder, timeout=30)
+        self.assertFalse(run.passed)
+        self.assertEqual(run.stubs, ["ch01/a"])
+
+    def test_missing_tests_and_regions_are_violations(self):
+        proofs = prove_exercises.match_tests_to_regions([self.region("ch01/a"), self.region("ch01/c")],
+                                                        ["ch01/a", "ch01/b"])
+        self.assertEqual(proofs["ch01/a"].violations, [])
+        self.assertIn("no grading test", proofs["ch01/c"].violations[0])
+        self.assertIn("has no region", proofs["ch01/b"].violations[0])
+
+    def test_a_test_failing_only_through_another_stub_needs_isolation(self):
+        folder = Path(self.folder.name)
+        proofs = prove_exercises.match_tests_to_regions([self.region("ch01/a"), self.region("ch01/b")],
+                                                        ["ch01/a", "ch01/b"])
+        to_isolate = prove_exercises.check_stubbed(proofs, self.executable, folder, timeout=30)
+        self.assertEqual(to_isolate, ["ch01/b"])
+        self.assertEqual(proofs["ch01/a"].stub_column(), "FAIL (its stub)")
+        self.assertEqual(proofs["ch01/b"].stub_column(), "FAIL (via ch01/a)")
+        prove_exercises.report_unisolated(proofs, to_isolate)
+        self.assertIn("only through ch01/a's stub", proofs["ch01/b"].violations[0])
+        table = prove_exercises.format_table(proofs)
+        self.assertRegex(table, r"ch01/b .*VIOLATION")
+
+    def test_catch_test_spec_escapes_special_characters(self):
+        self.assertEqual(prove_exercises.catch_test_spec("ch01/a"), "ch01/a")
+        self.assertEqual(prove_exercises.catch_test_spec("a,b[c]"), "a\\,b\\[c\\]")
+
+    def test_reads_the_cmake_cache(self):
+        build = Path(self.folder.name)
+        (build / "CMakeCache.txt").write_text("// comment\nCMAKE_GENERATOR:INTERNAL=Unix Makefiles\n"
+                                              "CMAKE_CXX_COMPILER:FILEPATH=/usr/bin/c++\n")
+        cache = prove_exercises.read_cmake_cache(build)
+        self.assertEqual(cache["CMAKE_GENERATOR"], "Unix Makefiles")
+        self.assertEqual(cache["CMAKE_CXX_COMPILER"], "/usr/bin/c++")
+
+
+if __name__ == "__main__":
+    unittest.main()
