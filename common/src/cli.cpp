@@ -1,6 +1,7 @@
 // The command line shared by every chapter's renderer.
 #include "freezeray/cli.hpp"
 
+#include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/progress.hpp"
@@ -140,6 +141,29 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     return 0;
 }
 
+// Parses "x,y,width,height".
+CropRegion parse_crop(const std::string& text) {
+    CropRegion crop;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &crop.x, &crop.y, &crop.width, &crop.height, &extra) != 4)
+        throw InputError("--crop", "'" + text + "' is not x,y,width,height");
+    crop.reason = "chosen by the user";
+    return crop;
+}
+
+int run_compare(CompareRequest request, const std::vector<std::string>& crops, const Registry& registry) {
+    for (const std::string& c : crops) request.crops.push_back(parse_crop(c));
+    const Comparison comparison = run_comparison(request, registry);
+    write_comparison_report(comparison, request.out_folder);
+    for (const IntegratorRun& run : comparison.runs) {
+        std::fprintf(stderr, "%-12s %8llu spp %8.2f s  relMSE %-10.4g%s  slope %.2f\n", run.integrator.c_str(),
+                     static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, run.relative_mse,
+                     run.error_is_estimated ? " (estimated)" : "", run.fit.slope);
+    }
+    std::cout << request.out_folder << "/report.html\n";
+    return 0;
+}
+
 }  // namespace
 
 int run_command_line(int argc, char** argv, const Registry& registry) {
@@ -172,6 +196,26 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     CLI::App* info_command = app.add_subcommand("info", "what a scene contains and which effects it calls for");
     info_command->add_option("scene", info_scene, "the scene's JSON file")->required();
 
+    CompareRequest compare;
+    std::string compare_integrators;
+    std::vector<std::string> compare_crops;
+    CLI::App* compare_command =
+        app.add_subcommand("compare", "render a scene with several integrators at equal time or samples; write a report");
+    compare_command->add_option("scene", compare.scene, "the scene's JSON file")->required();
+    compare_command->add_option("--integrators", compare_integrators, "comma-separated: " + integrators)->required();
+    auto* compare_time = compare_command->add_option("--time", compare.time_seconds, "seconds per integrator");
+    auto* compare_spp = compare_command->add_option("--spp", compare.samples_per_pixel, "samples per pixel per integrator");
+    compare_time->excludes(compare_spp);
+    compare_command->add_option("--reference", compare.reference, "reference image (EXR, PFM, HDR)");
+    compare_command->add_option("--out", compare.out_folder, "folder for report.html, report.md, convergence.csv")->required();
+    compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
+    compare_command->add_option("--seed", compare.seed, "random seed");
+    compare_command->add_option("--max-depth", compare.max_depth, "maximum path length in segments");
+    compare_command->add_option("--width", compare.width, "image width (default: the scene's)");
+    compare_command->add_option("--height", compare.height, "image height (default: the scene's)");
+    compare_command->add_option("--crop", compare_crops, "a region x,y,width,height to show magnified (repeatable)");
+    compare_command->add_flag("--quiet", compare.quiet, "no progress lines");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -182,6 +226,18 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
         render.spp_given = spp->count() > 0;
         if (*render_command) return run_render(render, registry);
         if (*info_command) return run_info(info_scene, registry);
+        if (*compare_command) {
+            std::string name;
+            for (char ch : compare_integrators + ",") {
+                if (ch != ',') {
+                    name += ch;
+                } else if (!name.empty()) {
+                    compare.integrators.push_back(name);
+                    name.clear();
+                }
+            }
+            return run_compare(compare, compare_crops, registry);
+        }
     } catch (const InputError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

@@ -39,7 +39,7 @@ RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& s
 
     Film film(width, height);
     std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
-    const auto start = std::chrono::steady_clock::now();
+    auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     progress.start("render", by_time ? 0 : sample_cap * width * height, settings.time_seconds);
 
@@ -76,7 +76,12 @@ RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& s
         if (!result.interrupted) done += pass;
         const double estimate = film.estimated_relative_mse();
         progress.set_estimated_error(estimate);
-        if (settings.on_pass && !result.interrupted) settings.on_pass(film, done, elapsed());
+        if (settings.on_pass && !result.interrupted) {
+            // The observer's time (measuring errors, writing checkpoints) is not render time.
+            const auto before = std::chrono::steady_clock::now();
+            settings.on_pass(film, done, elapsed());
+            start += std::chrono::steady_clock::now() - before;
+        }
         if (by_time && elapsed() >= settings.time_seconds) break;
         if (by_error && done >= MinimumSamplesForErrorEstimate && estimate >= 0.0 && estimate <= settings.target_error)
             break;

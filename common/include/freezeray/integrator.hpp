@@ -26,7 +26,8 @@ struct RenderSettings {
     int threads = 0;                       // 0: every core
     std::uint64_t seed = 0;
     int max_depth = 0;                     // 0: the integrator's default
-    // Called after every pass with the film so far (for checkpoints and convergence plots).
+    // Called after every pass with the film so far (for checkpoints and convergence plots);
+    // the time it takes is not counted as render time.
     std::function<void(const Film& film, std::uint64_t samples_per_pixel, double seconds)> on_pass;
     // Set (by a signal handler) to stop after the current tile; the result holds what was done.
     const std::atomic<bool>* stop_requested = nullptr;

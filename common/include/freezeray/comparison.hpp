@@ -1,0 +1,115 @@
+// Comparing integrators on one scene: what each one's accuracy costs in time. The `compare`
+// command fills a Comparison (renders, checkpoints, metrics, fits) and writes it as a report.
+#pragma once
+
+#include "freezeray/image.hpp"
+#include "freezeray/integrator.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace freezeray {
+
+// The error of one render at one moment of its run (a pass boundary: 1, 2, 4, ... spp).
+struct Checkpoint {
+    double seconds = 0.0;                  // render time so far, excluding the time spent measuring
+    std::uint64_t samples_per_pixel = 0;
+    double mse = -1.0;                     // against the reference; negative without one
+    double relative_mse = -1.0;            // against the reference; negative without one
+    double estimated_relative_mse = -1.0;  // from the film's per-pixel variance (no reference)
+};
+
+// A straight line fitted to log10(relMSE) against log10(seconds) by least squares: an unbiased
+// Monte Carlo estimator has slope -1 once the per-sample cost is steady.
+struct ConvergenceFit {
+    double slope = 0.0;
+    double intercept = 0.0;  // log10(relMSE) at 1 second
+    int points = 0;          // checkpoints used (0: no fit)
+    // The relMSE the fitted line predicts after `seconds`.
+    double predict(double seconds) const;
+    // The time the fitted line needs to reach `relative_mse` (infinite when it never does).
+    double time_to_reach(double relative_mse) const;
+};
+
+// When a run reaches a target relMSE: measured (interpolated between checkpoints) when it got
+// there, else extrapolated from the fit.
+struct TimeToAccuracy {
+    double target = 0.0;
+    double seconds = 0.0;   // infinite if the fit never reaches it
+    bool measured = false;
+};
+
+struct IntegratorRun {
+    std::string integrator;
+    RenderResult result;                 // final image, variance, samples, time
+    std::vector<Checkpoint> checkpoints; // in time order
+    // Final metrics against the reference (negative without a reference).
+    double mse = -1.0;
+    double relative_mse = -1.0;
+    double ssim = -1.0;
+    double mape = -1.0;
+    double efficiency = -1.0;            // 1 / (relMSE x seconds), relMSE measured or estimated
+    bool error_is_estimated = false;     // true when relMSE comes from the variance (no reference)
+    ConvergenceFit fit;
+    std::vector<TimeToAccuracy> time_to_accuracy;  // for 1e-2 and 1e-3
+};
+
+// A rectangle of the image shown magnified in the report.
+struct CropRegion {
+    int x = 0, y = 0, width = 0, height = 0;
+    std::string reason;  // "highest error", "chosen by the user"
+};
+
+struct Comparison {
+    std::string scene;                   // the scene file
+    std::string renderer;                // program name (ch03, freezeray)
+    std::string budget;                  // "equal time: 10 s each" or "equal samples: 64 spp each"
+    std::optional<Image> reference;      // absent: errors are estimated from the variance
+    std::string reference_description;   // file and its sample count, when known
+    std::vector<IntegratorRun> runs;
+    std::vector<CropRegion> crops;
+};
+
+class Registry;
+
+// What `compare` is asked to do (plain data, parsed in cli.cpp).
+struct CompareRequest {
+    std::string scene;
+    std::vector<std::string> integrators;
+    double time_seconds = 0.0;           // > 0: equal time
+    std::uint64_t samples_per_pixel = 0; // > 0: equal samples (when no time is given)
+    std::string reference;               // optional reference image
+    std::string out_folder;
+    int threads = 0;
+    std::uint64_t seed = 0;
+    int max_depth = 0;
+    int width = 0, height = 0;           // 0: the scene's
+    std::vector<CropRegion> crops;       // user-chosen; highest-error ones are added
+    bool quiet = false;
+};
+
+// Checks the request (scene, integrator names, reference size, output folder) before any
+// rendering, then renders the scene with each integrator and measures it. Throws InputError
+// for bad input; nothing is written.
+Comparison run_comparison(const CompareRequest& request, const Registry& registry);
+
+// Fits the checkpoints (those with a measured or else estimated relMSE > 0, skipping the very
+// first pass whose time is dominated by start-up).
+ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints);
+
+// Time to reach each target relMSE.
+std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints, const ConvergenceFit& fit,
+                                              const std::vector<double>& targets);
+
+// The `count` square regions of side `size` where the renders' mean relative error against
+// the reference is highest, not overlapping.
+std::vector<CropRegion> highest_error_regions(const std::vector<IntegratorRun>& runs, const Image& reference,
+                                              int size, int count);
+
+// Writes report.md, report.html (self-contained: images embedded), convergence.csv and the
+// images into `folder`. See common/src/report_*.cpp.
+void write_comparison_report(const Comparison& comparison, const std::string& folder);
+
+}  // namespace freezeray

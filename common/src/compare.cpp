@@ -1,0 +1,147 @@
+// The `compare` command: render one scene with several integrators under the same budget and
+// measure each one's error as it converges.
+#include "freezeray/comparison.hpp"
+
+#include "freezeray/error.hpp"
+#include "freezeray/metrics.hpp"
+#include "freezeray/progress.hpp"
+#include "freezeray/registry.hpp"
+#include "freezeray/scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+namespace freezeray {
+
+namespace {
+
+// The output folder must be creatable: its parent exists and is a folder.
+void check_output_folder(const std::string& folder) {
+    if (folder.empty()) throw InputError("--out", "an output folder is required");
+    std::error_code error;
+    const std::filesystem::path path = std::filesystem::absolute(folder, error);
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_directory(path, error))
+        throw InputError(folder, "exists and is not a folder");
+    const std::filesystem::path parent = path.parent_path();
+    if (!std::filesystem::is_directory(parent, error))
+        throw InputError(folder, "the folder '" + parent.string() + "' that would hold it does not exist");
+}
+
+std::string describe_reference(const std::string& path, const Image& reference) {
+    std::string text = path;
+    const auto spp = reference.metadata.find("freezeray:samples_per_pixel");
+    const auto integrator = reference.metadata.find("freezeray:integrator");
+    if (spp != reference.metadata.end()) {
+        text += " (" + spp->second + " spp";
+        if (integrator != reference.metadata.end()) text += ", " + integrator->second;
+        text += ")";
+    }
+    return text;
+}
+
+}  // namespace
+
+Comparison run_comparison(const CompareRequest& request, const Registry& registry) {
+    // Everything that can be wrong is checked before the first sample.
+    if (request.integrators.empty()) throw InputError("--integrators", "name at least one integrator");
+    if (request.time_seconds <= 0.0 && request.samples_per_pixel == 0)
+        throw InputError("--time/--spp", "give a time budget (--time) or a sample count (--spp)");
+    check_output_folder(request.out_folder);
+    SceneLoadOptions load;
+    load.width = request.width;
+    load.height = request.height;
+    const Scene scene = load_scene(request.scene, registry, load);
+    for (const std::string& w : scene.warnings)
+        if (!request.quiet) std::cerr << "warning: " << w << "\n";
+
+    RenderSettings settings;
+    settings.time_seconds = request.time_seconds;
+    settings.samples_per_pixel = request.time_seconds > 0.0 ? UINT64_MAX : request.samples_per_pixel;
+    settings.threads = request.threads;
+    settings.seed = request.seed;
+    settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
+    std::vector<std::unique_ptr<Integrator>> integrators;
+    for (const std::string& name : request.integrators)
+        integrators.push_back(registry.make_integrator(name, settings, "--integrators"));
+
+    Comparison comparison;
+    comparison.scene = request.scene;
+    comparison.renderer = registry.program();
+    char budget[128];
+    if (request.time_seconds > 0.0)
+        std::snprintf(budget, sizeof budget, "equal time: %g s each", request.time_seconds);
+    else
+        std::snprintf(budget, sizeof budget, "equal samples: %llu spp each",
+                      static_cast<unsigned long long>(request.samples_per_pixel));
+    comparison.budget = budget;
+    if (!request.reference.empty()) {
+        Image reference = read_image(request.reference);
+        if (reference.width() != scene.camera->width() || reference.height() != scene.camera->height())
+            throw InputError(request.reference, "is " + std::to_string(reference.width()) + "x" +
+                                                    std::to_string(reference.height()) + " but the scene renders " +
+                                                    std::to_string(scene.camera->width()) + "x" +
+                                                    std::to_string(scene.camera->height()));
+        comparison.reference_description = describe_reference(request.reference, reference);
+        comparison.reference = std::move(reference);
+    } else {
+        comparison.reference_description = "none: errors are estimated from each render's per-pixel variance";
+    }
+    for (const CropRegion& crop : request.crops) {
+        if (crop.x < 0 || crop.y < 0 || crop.width < 1 || crop.height < 1 || crop.x + crop.width > scene.camera->width() ||
+            crop.y + crop.height > scene.camera->height())
+            throw InputError("--crop", "region " + std::to_string(crop.x) + "," + std::to_string(crop.y) + "," +
+                                           std::to_string(crop.width) + "," + std::to_string(crop.height) +
+                                           " is not inside the image");
+    }
+
+    // BOOK(compare-run)
+    for (std::size_t i = 0; i < integrators.size(); ++i) {
+        IntegratorRun run;
+        run.integrator = request.integrators[i];
+        RenderSettings run_settings = settings;
+        // At every pass boundary (1, 2, 4, ... spp) record the error so far; this time is not
+        // counted as render time.
+        run_settings.on_pass = [&](const Film& film, std::uint64_t spp, double seconds) {
+            Checkpoint c;
+            c.seconds = seconds;
+            c.samples_per_pixel = spp;
+            c.estimated_relative_mse = film.estimated_relative_mse();
+            if (comparison.reference) {
+                const Image image = film.mean();
+                c.mse = mse(image, *comparison.reference);
+                c.relative_mse = relative_mse(image, *comparison.reference);
+            }
+            run.checkpoints.push_back(c);
+        };
+        Progress progress(request.quiet);
+        run.result = integrators[i]->render(scene, run_settings, progress);
+        if (comparison.reference) {
+            run.mse = mse(run.result.image, *comparison.reference);
+            run.relative_mse = relative_mse(run.result.image, *comparison.reference);
+            run.ssim = ssim(run.result.image, *comparison.reference);
+            run.mape = mape(run.result.image, *comparison.reference);
+        } else {
+            run.relative_mse = run.result.estimated_relative_mse;
+            run.error_is_estimated = true;
+        }
+        if (run.relative_mse > 0.0 && run.result.seconds > 0.0) run.efficiency = 1.0 / (run.relative_mse * run.result.seconds);
+        run.fit = fit_convergence(run.checkpoints);
+        run.time_to_accuracy = times_to_accuracy(run.checkpoints, run.fit, {1e-2, 1e-3});
+        if (run.result.invalid_samples > 0 && !request.quiet)
+            std::cerr << "warning: " << run.integrator << " produced " << run.result.invalid_samples
+                      << " invalid (NaN, infinite or negative) samples\n";
+        comparison.runs.push_back(std::move(run));
+    }
+    // END BOOK
+
+    comparison.crops = request.crops;
+    if (comparison.reference) {
+        const int size = std::max(8, std::min(scene.camera->width(), scene.camera->height()) / 8);
+        for (CropRegion& region : highest_error_regions(comparison.runs, *comparison.reference, size, 2))
+            comparison.crops.push_back(region);
+    }
+    return comparison;
+}
+
+}  // namespace freezeray
