@@ -2,6 +2,7 @@
 #include "test_scenes.hpp"
 
 #include "freezeray/ch01/register_chapter01.hpp"
+#include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/progress.hpp"
 
 #include <atomic>
@@ -31,8 +32,9 @@ std::optional<std::string> shared_scenes_folder() {
 
 const Registry& full_registry() {
     static const Registry registry = [] {
-        Registry r("freezeray", 1);
+        Registry r("freezeray", 2);
         register_chapter01(r);
+        register_chapter02(r);
         return r;
     }();
     return registry;

@@ -1,4 +1,5 @@
 // Loading JSON scenes: the shipped scenes, overrides, effects, and errors that name the place.
+#include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/scene.hpp"
 
@@ -30,9 +31,9 @@ std::string make_scene(const TemporaryFolder& folder, const std::string& scene_t
 
 const std::string camera = R"("camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [8, 4]})";
 
-std::string load_error(const std::string& path) {
+std::string load_error(const std::string& path, const Registry& registry = testing::full_registry()) {
     try {
-        load_scene(path, testing::full_registry());
+        load_scene(path, registry);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -91,7 +92,9 @@ TEST_CASE("scene errors name the file and the JSON path or line", "[unit][scene]
     SECTION("an unknown material type names the path and the chapter introducing it") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
             "materials": {"paint": {"type": "roughconductor"}}})");
-        CHECK_THAT(load_error(path), Catch::Contains("/materials/paint/type") && Catch::Contains("chapter 02"));
+        Registry chapter01("ch01", 1);
+        register_chapter01(chapter01);
+        CHECK_THAT(load_error(path, chapter01), Catch::Contains("/materials/paint/type") && Catch::Contains("chapter 02"));
         const std::string path2 = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
             "materials": {"paint": {"type": "velvet"}}})");
         CHECK_THAT(load_error(path2), Catch::Contains("unknown material 'velvet'"));

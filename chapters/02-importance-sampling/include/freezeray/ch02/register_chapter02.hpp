@@ -1,0 +1,13 @@
+// What chapter 02 adds to the renderer.
+#pragma once
+
+#include "freezeray/registry.hpp"
+
+namespace freezeray {
+
+// Registers chapter 02's materials: "diffuse" (replacing chapter 01's with a textured,
+// cosine-sampled one), "mirror", "conductor", "roughconductor", "dielectric",
+// "roughdielectric", "plastic", "roughplastic" and "mix". Call after register_chapter01.
+void register_chapter02(Registry& registry);
+
+}  // namespace freezeray

@@ -1,0 +1,57 @@
+// Path tracing with BSDF importance sampling: every bounce direction is drawn from the BSDF's
+// own sampling routine, so f |cos| / pdf stays close to constant and delta lobes (mirrors,
+// glass) are followed exactly (book chapter 02).
+#include "freezeray/ch02/path_tracer.hpp"
+
+#include <algorithm>
+
+namespace freezeray::ch02 {
+
+// BOOK(russian-roulette)
+float russian_roulette_continue_probability(const Spectrum& throughput) {
+    // EXERCISE(ch02/russian-roulette): return the probability of continuing: the largest component of the throughput, at most 0.95
+    return std::min(0.95f, max_component(throughput));
+    // END EXERCISE
+}
+// END BOOK
+
+// BOOK(pt-is-li)
+Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& scene, PCG32& random,
+                                         ScratchArena& arena) const {
+    Spectrum radiance(0.0f);
+    Spectrum throughput(1.0f);
+    Ray ray = camera_ray;
+    for (int segments = 1; segments <= max_depth_; ++segments) {
+        const std::optional<Hit> hit = scene.intersect(ray);
+        if (!hit) break;  // no environment before chapter 03
+        const Material& material = scene.material(*hit);
+        const Vec3 wo_world = -ray.direction;
+        radiance += throughput * emitted_radiance(material, *hit, wo_world);
+        if (segments == max_depth_) break;
+
+        const BSDF& bsdf = *material.bsdf(*hit, arena);
+        // Surfaces that only reflect are two-sided: seen from behind, the shading frame is
+        // turned to face the viewer. Transmissive ones need the true side (inside or outside).
+        Vec3 normal = hit->shading_normal;
+        if (!has_flag(bsdf.flags(), BSDF_Transmission) && glm::dot(normal, wo_world) < 0.0f) normal = -normal;
+        const Frame frame(normal);
+        const Vec2 u(random.next_float(), random.next_float());
+        const std::optional<BSDFSample> sample = bsdf.sample(frame.to_local(wo_world), u, random.next_float());
+        if (!sample || sample->pdf <= 0.0f) break;
+        throughput *= sample->weight();
+        if (is_black(throughput)) break;
+
+        // Russian roulette: stop with probability 1 - q, and divide the survivors by q, so the
+        // expected value is unchanged (Arvo and Kirk, "Particle Transport and Image Synthesis", 1990).
+        if (segments >= RussianRouletteStart) {
+            const float q = russian_roulette_continue_probability(throughput);
+            if (random.next_float() >= q) break;
+            throughput /= q;
+        }
+        ray = hit->spawn_ray(frame.to_world(sample->wi));
+    }
+    return radiance;
+}
+// END BOOK
+
+}  // namespace freezeray::ch02

@@ -1,0 +1,69 @@
+// Chapter 02's registrations.
+#include "freezeray/ch02/register_chapter02.hpp"
+
+#include "freezeray/ch02/materials.hpp"
+#include "freezeray/ch02/path_tracer.hpp"
+#include "freezeray/error.hpp"
+
+#include <string>
+#include <vector>
+
+namespace freezeray {
+
+namespace {
+
+// The materials of chapter 02 with the summary `--help` and `info` print.
+struct MaterialEntry {
+    const char* name;
+    const char* summary;
+    std::unique_ptr<Material> (*make)(const Parameters&);
+};
+
+std::unique_ptr<Material> make_mix_part(const Parameters& p);
+
+const MaterialEntry chapter02_materials[] = {
+    {"diffuse", "Lambertian reflector, cosine-sampled: albedo or albedo_texture (MTL Kd, map_Kd)",
+     ch02::make_diffuse_material},
+    {"mirror", "perfect mirror: reflectance at every angle", ch02::make_mirror_material},
+    {"conductor", "smooth metal: preset material, or eta and k, tinted by specular_reflectance (MTL Ks)",
+     [](const Parameters& p) { return ch02::make_conductor_material(p, false); }},
+    {"roughconductor", "rough metal (GGX microfacets): as conductor, plus roughness",
+     [](const Parameters& p) { return ch02::make_conductor_material(p, true); }},
+    {"dielectric", "smooth glass: ior (MTL Ni)", [](const Parameters& p) { return ch02::make_dielectric_material(p, false); }},
+    {"roughdielectric", "rough glass (GGX microfacets): ior, roughness",
+     [](const Parameters& p) { return ch02::make_dielectric_material(p, true); }},
+    {"plastic", "diffuse base under a smooth dielectric coating: albedo, ior",
+     [](const Parameters& p) { return ch02::make_plastic_material(p, false); }},
+    {"roughplastic", "diffuse base under a rough coating (GGX microfacets): albedo, ior, roughness",
+     [](const Parameters& p) { return ch02::make_plastic_material(p, true); }},
+    {"mix", "two materials blended by a weight: first, second, weight",
+     [](const Parameters& p) { return ch02::make_mix_material(p, make_mix_part); }},
+};
+
+// A part of a mix material: any material of this chapter, described inline.
+std::unique_ptr<Material> make_mix_part(const Parameters& p) {
+    const std::string type = p.require_string("type");
+    std::vector<std::string> names;
+    for (const MaterialEntry& entry : chapter02_materials) {
+        if (type == entry.name) {
+            std::unique_ptr<Material> material = entry.make(p);
+            material->type = type;
+            return material;
+        }
+        names.emplace_back(entry.name);
+    }
+    throw InputError(p.where("type"), "unknown material '" + type + "' (did you mean '" + nearest_name(type, names) +
+                                          "'?); a part of a mix is one of chapter 02's materials");
+}
+
+}  // namespace
+
+void register_chapter02(Registry& registry) {
+    for (const MaterialEntry& entry : chapter02_materials) registry.add_material(entry.name, 2, entry.summary, entry.make);
+    registry.add_integrator("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
+                            [](const RenderSettings& settings) {
+                                return std::make_unique<ch02::ImportanceSampledPathTracer>(settings.max_depth);
+                            });
+}
+
+}  // namespace freezeray

@@ -1,0 +1,21 @@
+// Texture storage: the size and range every layout keeps, and the row-major layout.
+#include "freezeray/ch02/texture_storage.hpp"
+
+#include <stdexcept>
+
+namespace freezeray::ch02 {
+
+TextureStorage::TextureStorage(const Image& image)
+    : width_(image.width()), height_(image.height()), minimum_(0.0f), maximum_(0.0f) {
+    // An empty image is a programming error: read_image refuses files without pixels.
+    if (image.pixel_count() == 0) throw std::invalid_argument("TextureStorage: the image has no pixels");
+    minimum_ = maximum_ = image.pixels().front();
+    for (const Spectrum& texel : image.pixels()) {
+        minimum_ = glm::min(minimum_, texel);
+        maximum_ = glm::max(maximum_, texel);
+    }
+}
+
+LinearTextureStorage::LinearTextureStorage(const Image& image) : TextureStorage(image), texels_(image.pixels()) {}
+
+}  // namespace freezeray::ch02

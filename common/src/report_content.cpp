@@ -1,0 +1,239 @@
+// What a comparison report says, whatever its format (see report_content.hpp).
+#include "report_content.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+namespace freezeray::report {
+
+namespace {
+
+// A name that is safe as a file name on every system: letters, digits, '-', '_' and '.' kept,
+// anything else replaced by '-'; never empty, never hidden.
+std::string safe_file_name(const std::string& name) {
+    std::string safe;
+    for (const char c : name) {
+        const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+        safe += keep ? c : '-';
+    }
+    if (safe.empty() || safe.front() == '.') safe = "run" + safe;
+    return safe;
+}
+
+// A value the table can show: finite and not negative (negative means "none").
+bool has_value(double value) { return std::isfinite(value) && value >= 0.0; }
+
+// Which way a column is better.
+enum class Better { Nowhere, Lower, Higher };
+
+}  // namespace
+
+Layout report_layout(const Comparison& comparison) {
+    Layout layout;
+    std::set<std::string> taken = {ReferenceName};
+    for (const IntegratorRun& run : comparison.runs) {
+        const std::string base = safe_file_name(run.integrator);
+        std::string name = base;
+        for (int copy = 2; taken.count(name) > 0; ++copy) name = base + "-" + std::to_string(copy);
+        taken.insert(name);
+        layout.run_names.push_back(name);
+    }
+    if (comparison.reference) {
+        layout.width = comparison.reference->width();
+        layout.height = comparison.reference->height();
+    } else if (!comparison.runs.empty()) {
+        layout.width = comparison.runs.front().result.image.width();
+        layout.height = comparison.runs.front().result.image.height();
+    }
+    for (std::size_t i = 0; i < comparison.crops.size(); ++i) {
+        const CropRegion& crop = comparison.crops[i];
+        const int x0 = std::max(crop.x, 0), y0 = std::max(crop.y, 0);
+        const int x1 = std::min(crop.x + crop.width, layout.width), y1 = std::min(crop.y + crop.height, layout.height);
+        if (x1 <= x0 || y1 <= y0) continue;
+        layout.crops.push_back({static_cast<int>(i) + 1, CropRegion{x0, y0, x1 - x0, y1 - y0, crop.reason}});
+    }
+    return layout;
+}
+
+std::string image_file(const std::string& name) { return "images/" + name + ".png"; }
+std::string error_map_file(const std::string& name) { return "images/" + name + "-error.png"; }
+std::string crop_file(int number, const std::string& name) {
+    return "images/crop-" + std::to_string(number) + "-" + name + ".png";
+}
+
+bool has_error_map(const Comparison& comparison, const IntegratorRun& run) {
+    if (comparison.reference) return true;
+    const Image& variance = run.result.variance;
+    return variance.pixel_count() > 0 && variance.width() == run.result.image.width() &&
+           variance.height() == run.result.image.height();
+}
+
+// Estimated: the render's own estimate, else the last checkpoint's.
+double shown_relative_mse(const IntegratorRun& run) {
+    if (!run.error_is_estimated) return run.relative_mse;
+    if (run.result.estimated_relative_mse >= 0.0 || run.checkpoints.empty()) return run.result.estimated_relative_mse;
+    return run.checkpoints.back().estimated_relative_mse;
+}
+
+MetricsTable metrics_table(const Comparison& comparison) {
+    MetricsTable table;
+    table.headers = {"samples per pixel", "wall time (s)", "MSE", "relMSE", "SSIM", "efficiency 1/(relMSE·s)"};
+    const Better better[] = {Better::Nowhere, Better::Lower, Better::Lower, Better::Lower, Better::Higher, Better::Higher};
+    const bool compares_error[] = {false, false, false, true, false, true};  // measured and estimated differ
+
+    std::vector<std::vector<double>> values;  // per row, per column; negative: none
+    for (const IntegratorRun& run : comparison.runs) {
+        const double seconds = run.result.seconds;
+        const double relative = shown_relative_mse(run);
+        double efficiency = run.efficiency;
+        if (!has_value(efficiency) && relative > 0.0 && seconds > 0.0) efficiency = 1.0 / (relative * seconds);
+        values.push_back({static_cast<double>(run.result.samples_per_pixel), seconds,
+                          run.error_is_estimated ? -1.0 : run.mse, relative, run.error_is_estimated ? -1.0 : run.ssim,
+                          efficiency});
+        TableRow row;
+        row.integrator = run.integrator;
+        row.estimated = run.error_is_estimated;
+        for (std::size_t column = 0; column < values.back().size(); ++column) {
+            const double value = values.back()[column];
+            std::string text = column == 0 ? std::to_string(run.result.samples_per_pixel) : format_number(value);
+            if (column == 3 && run.error_is_estimated && has_value(value)) text += " (estimated)";
+            row.cells.push_back({text, false});
+        }
+        table.rows.push_back(row);
+    }
+
+    const bool any_measured = std::any_of(comparison.runs.begin(), comparison.runs.end(),
+                                          [](const IntegratorRun& run) { return !run.error_is_estimated; });
+    for (std::size_t column = 0; column < table.headers.size(); ++column) {
+        if (better[column] == Better::Nowhere) continue;
+        std::vector<std::size_t> candidates;
+        for (std::size_t row = 0; row < table.rows.size(); ++row) {
+            const bool comparable = !compares_error[column] || !any_measured || !table.rows[row].estimated;
+            if (comparable && has_value(values[row][column])) candidates.push_back(row);
+        }
+        if (candidates.size() < 2) continue;
+        double best = values[candidates.front()][column];
+        for (const std::size_t row : candidates) {
+            const double value = values[row][column];
+            best = better[column] == Better::Lower ? std::min(best, value) : std::max(best, value);
+        }
+        for (const std::size_t row : candidates) {
+            if (values[row][column] == best) table.rows[row].cells[column].best = true;
+        }
+    }
+    return table;
+}
+
+AccuracyTable accuracy_table(const Comparison& comparison) {
+    AccuracyTable table;
+    for (const IntegratorRun& run : comparison.runs) {
+        for (const TimeToAccuracy& time : run.time_to_accuracy) {
+            if (std::find(table.targets.begin(), table.targets.end(), time.target) == table.targets.end()) {
+                table.targets.push_back(time.target);
+            }
+        }
+    }
+    for (const IntegratorRun& run : comparison.runs) {
+        std::vector<std::string> texts;
+        for (const double target : table.targets) {
+            const auto time = std::find_if(run.time_to_accuracy.begin(), run.time_to_accuracy.end(),
+                                           [&](const TimeToAccuracy& t) { return t.target == target; });
+            if (time == run.time_to_accuracy.end() || std::isnan(time->seconds)) {
+                texts.push_back("—");
+            } else if (std::isinf(time->seconds)) {
+                texts.push_back("never (∞)");
+            } else {
+                texts.push_back(format_number(time->seconds) + " s (" + (time->measured ? "measured" : "extrapolated") + ")");
+            }
+        }
+        table.rows.emplace_back(run.integrator, texts);
+    }
+    return table;
+}
+
+std::string format_number(double value) {
+    if (!has_value(value)) return "—";
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", value);
+    return text;
+}
+
+std::string format_slope(double slope) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.2f", std::abs(slope));
+    return (slope < 0.0 && std::string(text) != "0.00" ? "−" : "") + std::string(text);
+}
+
+std::string decade_label(int exponent) {
+    if (exponent >= 0 && exponent <= 3) return std::to_string(static_cast<int>(std::lround(std::pow(10.0, exponent))));
+    return "1e" + std::to_string(exponent);
+}
+
+std::string describe_crop(const NumberedCrop& crop) {
+    const CropRegion& r = crop.region;
+    std::string text = "crop " + std::to_string(crop.number) + ": " + std::to_string(r.width) + " × " +
+                       std::to_string(r.height) + " pixels at (" + std::to_string(r.x) + ", " + std::to_string(r.y) + ")";
+    return r.reason.empty() ? text : text + ", " + r.reason;
+}
+
+std::string describe_fit(const ConvergenceFit& fit) {
+    if (fit.points == 0) return "no fit (too few checkpoints)";
+    return "slope " + format_slope(fit.slope) + " from " + std::to_string(fit.points) + " checkpoints";
+}
+
+std::vector<std::pair<std::string, std::string>> header_facts(const Comparison& comparison, const Layout& layout) {
+    std::string reference = "none: every error is estimated from the render's own per-pixel variance";
+    if (comparison.reference) {
+        reference = comparison.reference_description.empty() ? "given" : comparison.reference_description;
+    }
+    return {{"Scene", comparison.scene},
+            {"Renderer", comparison.renderer},
+            {"Budget", comparison.budget},
+            {"Reference", reference},
+            {"Image", std::to_string(layout.width) + " × " + std::to_string(layout.height) + " pixels"}};
+}
+
+std::vector<std::string> how_to_read(const Comparison& comparison) {
+    std::vector<std::string> paragraphs = {
+        "Every integrator rendered the same scene with the same budget (" + comparison.budget +
+            "), so their errors compare directly: at equal time, the one with the lower error is the better "
+            "method for this scene.",
+        "relMSE is the mean over pixels and channels of (x − r)² / (r² + 0.01): the squared error relative to "
+        "the reference's brightness (Rousselle, Knaus and Zwicker 2011). Efficiency is 1 / (relMSE × time). "
+        "The relMSE of an unbiased estimator falls like 1 / time, so its efficiency does not depend on how long "
+        "it ran: an integrator twice as efficient reaches the same error in half the time.",
+        "On the log–log plot of error against time, an unbiased estimator's line is straight with slope −1: "
+        "the MSE halves when the time doubles. The dashed lines are least-squares fits (the legend gives each "
+        "slope); a line that flattens out instead shows bias, or a reference that is itself not converged. "
+        "Time to accuracy reads the same curves at a target error: measured when the run got there, "
+        "extrapolated along its fitted line when it did not.",
+        "Best in each column is marked: lowest time, MSE and relMSE; highest SSIM (structural similarity, "
+        "1 is identical) and efficiency."};
+    if (!comparison.reference) {
+        paragraphs.push_back(
+            "There is no reference: each relMSE is estimated from the render's own per-pixel variance, which "
+            "assumes the integrator is unbiased and cannot see bias. MSE and SSIM need a reference and are left out.");
+    }
+    return paragraphs;
+}
+
+std::string error_map_caption(const Comparison& comparison) {
+    const std::string scale = ", averaged over R, G and B, on a log scale from 1e-3 (dark) to 10 (bright); the "
+                              "same scale for every integrator (viridis, Smith and van der Walt 2015).";
+    if (comparison.reference) return "Per-pixel relative error |x − r| / (|r| + 0.01)" + scale;
+    return "Per-pixel estimated relative error √variance / (|x| + 0.01), from each render's own variance" + scale;
+}
+
+std::string short_scene_name(const std::string& path) {
+    const std::filesystem::path file(path);
+    const std::string folder = file.parent_path().filename().string();
+    const std::string name = file.filename().string();
+    if (name.empty()) return path;
+    return folder.empty() || folder == "." || folder == ".." ? name : folder + "/" + name;
+}
+
+}  // namespace freezeray::report
