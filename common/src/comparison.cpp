@@ -16,6 +16,24 @@ double checkpoint_error(const Checkpoint& c) { return c.relative_mse >= 0.0 ? c.
 
 }  // namespace
 
+Line fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+    const std::size_t count = std::min(x.size(), y.size());
+    if (count < 2) return {};
+    const double n = static_cast<double>(count);
+    double mean_x = 0, mean_y = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        mean_x += x[i] / n;
+        mean_y += y[i] / n;
+    }
+    double sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        sxx += (x[i] - mean_x) * (x[i] - mean_x);
+        sxy += (x[i] - mean_x) * (y[i] - mean_y);
+    }
+    if (sxx <= 0.0) return {};
+    return {sxy / sxx, mean_y - (sxy / sxx) * mean_x};
+}
+
 double ConvergenceFit::predict(double seconds) const {
     return std::pow(10.0, intercept + slope * std::log10(seconds));
 }
@@ -39,20 +57,9 @@ ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints) {
     }
     ConvergenceFit fit;
     if (xs.size() < 2) return fit;
-    const double n = static_cast<double>(xs.size());
-    double mean_x = 0, mean_y = 0;
-    for (std::size_t i = 0; i < xs.size(); ++i) {
-        mean_x += xs[i] / n;
-        mean_y += ys[i] / n;
-    }
-    double sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < xs.size(); ++i) {
-        sxx += (xs[i] - mean_x) * (xs[i] - mean_x);
-        sxy += (xs[i] - mean_x) * (ys[i] - mean_y);
-    }
-    if (sxx <= 0.0) return fit;
-    fit.slope = sxy / sxx;
-    fit.intercept = mean_y - fit.slope * mean_x;
+    const Line line = fit_line(xs, ys);
+    fit.slope = line.slope;
+    fit.intercept = line.intercept;
     fit.points = static_cast<int>(xs.size());
     return fit;
 }

@@ -1,4 +1,5 @@
 // pt-naive converges to the right answer, at the right rate, reproducibly.
+#include "freezeray/comparison.hpp"
 #include "freezeray/metrics.hpp"
 #include "freezeray/progress.hpp"
 
@@ -65,18 +66,7 @@ TEST_CASE("pt-naive's MSE against a reference falls like 1/N", "[convergence][ch
     testing::full_registry().make_integrator("pt-naive", settings, "test")->render(scene, settings, quiet);
     REQUIRE(log_n.size() >= 6u);
 
-    const double n = static_cast<double>(log_n.size());
-    double mean_x = 0, mean_y = 0;
-    for (std::size_t i = 0; i < log_n.size(); ++i) {
-        mean_x += log_n[i] / n;
-        mean_y += log_mse[i] / n;
-    }
-    double sxy = 0, sxx = 0;
-    for (std::size_t i = 0; i < log_n.size(); ++i) {
-        sxy += (log_n[i] - mean_x) * (log_mse[i] - mean_y);
-        sxx += (log_n[i] - mean_x) * (log_n[i] - mean_x);
-    }
-    const double slope = sxy / sxx;
+    const double slope = fit_line(log_n, log_mse).slope;
     INFO("fitted slope of log MSE against log N: " << slope);
     CHECK(slope == Approx(-1.0).margin(0.15));
 }

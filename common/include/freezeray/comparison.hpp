@@ -95,6 +95,14 @@ struct CompareRequest {
 // for bad input; nothing is written.
 Comparison run_comparison(const CompareRequest& request, const Registry& registry);
 
+// The least-squares line y = intercept + slope x through the points (x_i, y_i); slope and
+// intercept are 0 when fewer than two distinct x are given.
+struct Line {
+    double slope = 0.0;
+    double intercept = 0.0;
+};
+Line fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
 // Fits the checkpoints (those with a measured or else estimated relMSE > 0, skipping the very
 // first pass whose time is dominated by start-up).
 ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints);
