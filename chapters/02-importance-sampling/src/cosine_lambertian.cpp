@@ -42,7 +42,7 @@ float cosine_hemisphere_pdf(float cos_theta) { return std::max(cos_theta, 0.0f) 
 std::optional<BSDFSample> CosineLambertianBSDF::sample(const Vec3& wo, const Vec2& u, float /*u_lobe*/) const {
     if (wo.z == 0.0f) return std::nullopt;
     Vec3 wi = sample_cosine_hemisphere(u);
-    if (wo.z < 0.0f) wi.z = -wi.z;  // reflect on the side wo is on, as chapter 01's Lambertian does
+    if (wo.z < 0.0f) wi.z = -wi.z;          // reflect on the side wo is on, as chapter 01's Lambertian does
     if (wi.z == 0.0f) return std::nullopt;  // on the horizon: pdf 0
     BSDFSample s;
     s.wi = wi;

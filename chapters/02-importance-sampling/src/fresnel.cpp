@@ -103,13 +103,9 @@ double diffuse_reflectance_from_thinner_side(double n) {
 
 }  // namespace
 
-float fresnel_dielectric_s_polarised(float cos_theta_i, float eta) {
-    return polarised_reflectance(cos_theta_i, eta).s;
-}
+float fresnel_dielectric_s_polarised(float cos_theta_i, float eta) { return polarised_reflectance(cos_theta_i, eta).s; }
 
-float fresnel_dielectric_p_polarised(float cos_theta_i, float eta) {
-    return polarised_reflectance(cos_theta_i, eta).p;
-}
+float fresnel_dielectric_p_polarised(float cos_theta_i, float eta) { return polarised_reflectance(cos_theta_i, eta).p; }
 
 float fresnel_diffuse_reflectance(float eta) {
     if (eta == 1.0f) return 0.0f;

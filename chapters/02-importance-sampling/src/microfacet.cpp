@@ -54,19 +54,22 @@ float TrowbridgeReitz::G(const Vec3& wo, const Vec3& wi) const { return 1.0f / (
 // The distribution of visible normals (Heitz 2014; Heitz 2018, section 2): microfacets
 // weighted by their projected area |w.wm| as seen from w, of which the fraction G1(w) is not
 // hidden; dividing by the projected area |cos theta(w)| of the macrosurface normalises it.
+// Microfacets facing away from w (w.wm < 0 for w above the surface) are not visible.
 float TrowbridgeReitz::D(const Vec3& w, const Vec3& wm) const {
-    const float cos_theta = std::abs(w.z);
-    if (cos_theta == 0.0f) return 0.0f;
-    return G1(w) / cos_theta * D(wm) * std::abs(glm::dot(w, wm));
+    if (w.z == 0.0f) return 0.0f;
+    const float visible_cos = w.z > 0.0f ? glm::dot(w, wm) : -glm::dot(w, wm);  // seen from w's side
+    if (visible_cos <= 0.0f) return 0.0f;
+    return G1(w) / std::abs(w.z) * D(wm) * visible_cos;
 }
 
 float TrowbridgeReitz::pdf(const Vec3& w, const Vec3& wm) const { return D(w, wm); }
 
 // BOOK(ggx-visible-normals)
-// Heitz 2018, appendix listing: stretch the view direction so that the ellipsoid of normals becomes a
-// hemisphere, pick a point uniformly on the hemisphere's projected area as seen from that
-// direction (a disk, of which the part hidden behind the hemisphere's rim is folded back), lift
-// it onto the hemisphere, and stretch its normal back.
+// Heitz 2018, the paper's listing: stretch the view direction so that the ellipsoid of normals
+// becomes a hemisphere, pick a point uniformly on the hemisphere's silhouette as seen from that
+// direction (a half disk below and a half ellipse above: a uniform disk squeezed onto it), lift
+// the point onto the hemisphere, and stretch its normal back. Visible normals are sampled exactly,
+// with density D(w, wm), whatever w.
 Vec3 TrowbridgeReitz::sample_visible_normal(const Vec3& w, const Vec2& u) const {
     // EXERCISE(ch02/ggx-visible-normals): return a microfacet normal distributed as the normals visible from w (Heitz 2018)
     // Section 3.2: the view direction in the hemisphere configuration, on its upper side.

@@ -15,7 +15,7 @@ Spectrum RoughConductorBSDF::eval(const Vec3& wo, const Vec3& wi) const {
     const float cos_theta_i = std::abs(wi.z);
     const Vec3 wm = reflection_half_vector(wo, wi);
     if (wm.z == 0.0f) return Spectrum(0.0f);
-    const Spectrum F = fresnel_conductor(std::abs(glm::dot(wo, wm)), smooth_.eta(), smooth_.k());
+    const Spectrum F = fresnel_conductor(std::abs(glm::dot(wo, wm)), eta_, k_);
     return distribution_.D(wm) * distribution_.G(wo, wi) * F / (4.0f * cos_theta_o * cos_theta_i);
 }
 
@@ -24,7 +24,7 @@ Spectrum RoughConductorBSDF::eval(const Vec3& wo, const Vec3& wi) const {
 // 2007, eq. 14): pdf = D(wo, wm) / (4 |wo.wm|). Some reflected directions go below the surface
 // (the microfacet faces away steeply): those samples fail, and the integral of pdf is below one.
 std::optional<BSDFSample> RoughConductorBSDF::sample(const Vec3& wo, const Vec2& u, float u_lobe) const {
-    if (distribution_.effectively_smooth()) return smooth_.sample(wo, u, u_lobe);
+    if (distribution_.effectively_smooth()) return SpecularConductorBSDF(eta_, k_).sample(wo, u, u_lobe);
     if (wo.z == 0.0f) return std::nullopt;
     const Vec3 wm = distribution_.sample_visible_normal(wo, u);
     const Vec3 wi = reflect(wo, wm);
@@ -35,7 +35,7 @@ std::optional<BSDFSample> RoughConductorBSDF::sample(const Vec3& wo, const Vec2&
     BSDFSample s;
     s.wi = wi;
     s.pdf = distribution_.pdf(wo, wm) / (4.0f * cos_wo_wm);
-    const Spectrum F = fresnel_conductor(cos_wo_wm, smooth_.eta(), smooth_.k());
+    const Spectrum F = fresnel_conductor(cos_wo_wm, eta_, k_);
     s.f = distribution_.D(wm) * distribution_.G(wo, wi) * F / (4.0f * std::abs(wo.z) * std::abs(wi.z));
     s.flags = BSDF_Reflection | BSDF_Glossy;
     if (!(s.pdf > 0.0f) || !is_valid_radiance(s.f)) return std::nullopt;
@@ -52,7 +52,8 @@ float RoughConductorBSDF::pdf(const Vec3& wo, const Vec3& wi) const {
 }
 
 std::uint32_t RoughConductorBSDF::flags() const {
-    return distribution_.effectively_smooth() ? smooth_.flags() : (BSDF_Reflection | BSDF_Glossy);
+    return distribution_.effectively_smooth() ? SpecularConductorBSDF(eta_, k_).flags()
+                                              : (BSDF_Reflection | BSDF_Glossy);
 }
 
 }  // namespace freezeray::ch02

@@ -57,10 +57,10 @@ float refraction_jacobian(const Vec3& wo, const Vec3& wi, const Vec3& wm, float 
 // light paths in chapter 04 leave it out).
 Spectrum RoughDielectricBSDF::eval(const Vec3& wo, const Vec3& wi) const {
     if (is_smooth()) return Spectrum(0.0f);
-    const MicrofacetEvent event = microfacet_event(wo, wi, smooth_.eta());
+    const MicrofacetEvent event = microfacet_event(wo, wi, eta_);
     if (!event.valid) return Spectrum(0.0f);
     const Vec3& wm = event.wm;
-    const float F = fresnel_dielectric(glm::dot(wo, wm), smooth_.eta());
+    const float F = fresnel_dielectric(glm::dot(wo, wm), eta_);
     const float DG = distribution_.D(wm) * distribution_.G(wo, wi);
     const float cos_product = std::abs(wo.z * wi.z);
     if (event.reflection) return Spectrum(DG * F / (4.0f * cos_product));
@@ -72,9 +72,9 @@ Spectrum RoughDielectricBSDF::eval(const Vec3& wo, const Vec3& wi) const {
 // Sample a normal visible from wo, then reflect with probability F(wo.wm) or refract: the density
 // of wi is D(wo, wm) times the Jacobian of the chosen event (eqs. 14 and 17) times its probability.
 std::optional<BSDFSample> RoughDielectricBSDF::sample(const Vec3& wo, const Vec2& u, float u_lobe) const {
-    if (is_smooth()) return smooth_.sample(wo, u, u_lobe);
+    if (is_smooth()) return SmoothDielectricBSDF(eta_).sample(wo, u, u_lobe);
     if (wo.z == 0.0f) return std::nullopt;
-    const float eta = smooth_.eta();
+    const float eta = eta_;
     const Vec3 wm = distribution_.sample_visible_normal(wo, u);
     const float cos_wo_wm = glm::dot(wo, wm);
     if (cos_wo_wm == 0.0f) return std::nullopt;
@@ -106,17 +106,17 @@ std::optional<BSDFSample> RoughDielectricBSDF::sample(const Vec3& wo, const Vec2
 
 float RoughDielectricBSDF::pdf(const Vec3& wo, const Vec3& wi) const {
     if (is_smooth()) return 0.0f;
-    const MicrofacetEvent event = microfacet_event(wo, wi, smooth_.eta());
+    const MicrofacetEvent event = microfacet_event(wo, wi, eta_);
     if (!event.valid) return 0.0f;
     const Vec3& wm = event.wm;
-    const float R = fresnel_dielectric(glm::dot(wo, wm), smooth_.eta());
+    const float R = fresnel_dielectric(glm::dot(wo, wm), eta_);
     const float D_visible = distribution_.pdf(wo, wm);
     if (event.reflection) return D_visible / (4.0f * std::abs(glm::dot(wo, wm))) * R;
     return D_visible * refraction_jacobian(wo, wi, wm, event.eta_crossed) * (1.0f - R);
 }
 
 std::uint32_t RoughDielectricBSDF::flags() const {
-    if (is_smooth()) return smooth_.flags();
+    if (is_smooth()) return SmoothDielectricBSDF(eta_).flags();
     return BSDF_Reflection | BSDF_Transmission | BSDF_Glossy;
 }
 

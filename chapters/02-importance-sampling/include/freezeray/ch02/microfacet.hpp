@@ -55,8 +55,8 @@ public:
     // function 1 / (1 + Lambda(wo) + Lambda(wi)).
     float G(const Vec3& wo, const Vec3& wi) const;
 
-    // The distribution of normals visible from w: G1(w) |w.wm| D(wm) / |cos theta(w)|. For w below
-    // the surface it is the distribution seen from -w (the same surface, looked at from inside).
+    // The distribution of normals visible from w: G1(w) max(0, w.wm) D(wm) / cos theta(w). For w
+    // below the surface it is the distribution seen from -w (the surface looked at from inside).
     float D(const Vec3& w, const Vec3& wm) const;
 
     // The density with which sample_visible_normal(w, u) returns wm: D(w, wm).

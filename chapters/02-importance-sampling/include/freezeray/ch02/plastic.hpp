@@ -14,8 +14,12 @@ namespace freezeray::ch02 {
 //     f = f_coating + diffuse_albedo (1 - F(cos o)) (1 - F(cos i)) / (pi eta^2 (1 - Fdr_inside)),
 // F the coating's Fresnel reflectance, Fdr_inside its diffuse reflectance seen from inside.
 // The directional albedo is exactly F(cos o) + (1 - F(cos o)) diffuse_albedo for a smooth coating:
-// never above 1. eta = n_coating / n_outside. coating: the coating's roughness, nullptr (or an
-// effectively smooth distribution) for a smooth coating. Reflects on both sides of the surface.
+// never above 1. A rough coating adds the GGX reflection of a rough dielectric (Walter et al. 2007)
+// and keeps the smooth Fresnel factors for the base, where Mitsuba's roughplastic tabulates the
+// rough coating's transmittance: an approximation whose albedo can exceed 1 by up to 7e-4 for a
+// white base (tests/unit/test_ch02_bsdfs.cpp measures it). eta = n_coating / n_outside.
+// coating: the coating's roughness, nullptr (or an effectively smooth distribution) for a smooth
+// coating. Reflects on both sides of the surface.
 class PlasticBSDF final : public BSDF {
 public:
     PlasticBSDF(const Spectrum& diffuse_albedo, float eta, const TrowbridgeReitz* coating);

@@ -14,7 +14,7 @@ namespace freezeray::ch02 {
 class RoughConductorBSDF final : public BSDF {
 public:
     RoughConductorBSDF(const TrowbridgeReitz& distribution, const Spectrum& eta, const Spectrum& k)
-        : distribution_(distribution), smooth_(eta, k) {}
+        : distribution_(distribution), eta_(eta), k_(k) {}
 
     Spectrum eval(const Vec3& wo, const Vec3& wi) const override;
     std::optional<BSDFSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const override;
@@ -23,7 +23,8 @@ public:
 
 private:
     TrowbridgeReitz distribution_;
-    SpecularConductorBSDF smooth_;  // the optical constants, and the BSDF used when smooth
+    Spectrum eta_;
+    Spectrum k_;
 };
 
 }  // namespace freezeray::ch02

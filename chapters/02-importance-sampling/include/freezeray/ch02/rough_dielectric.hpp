@@ -15,7 +15,7 @@ namespace freezeray::ch02 {
 // (nothing to scatter off), it is exactly SmoothDielectricBSDF.
 class RoughDielectricBSDF final : public BSDF {
 public:
-    RoughDielectricBSDF(const TrowbridgeReitz& distribution, float eta) : distribution_(distribution), smooth_(eta) {}
+    RoughDielectricBSDF(const TrowbridgeReitz& distribution, float eta) : distribution_(distribution), eta_(eta) {}
 
     Spectrum eval(const Vec3& wo, const Vec3& wi) const override;
     std::optional<BSDFSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const override;
@@ -23,10 +23,10 @@ public:
     std::uint32_t flags() const override;
 
 private:
-    bool is_smooth() const { return distribution_.effectively_smooth() || smooth_.eta() == 1.0f; }
+    bool is_smooth() const { return distribution_.effectively_smooth() || eta_ == 1.0f; }
 
     TrowbridgeReitz distribution_;
-    SmoothDielectricBSDF smooth_;  // the index of refraction, and the BSDF used when smooth
+    float eta_;
 };
 
 }  // namespace freezeray::ch02
