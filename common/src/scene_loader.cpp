@@ -3,6 +3,7 @@
 #include "freezeray/scene.hpp"
 
 #include "freezeray/error.hpp"
+#include "freezeray/material_from_mtl.hpp"
 #include "freezeray/obj_loader.hpp"
 #include "freezeray/parameters.hpp"
 #include "freezeray/registry.hpp"
@@ -105,33 +106,6 @@ Mat4 read_transform(const Parameters& p, std::vector<std::string>& warnings) {
                                                                           : p.get_vec3("scale", Vec3(1.0f));
     if (scale.x * scale.y * scale.z == 0.0f) throw InputError(p.where("scale"), "must not be zero");
     return glm::scale(result, scale);
-}
-
-// The JSON description of the renderer material an MTL block stands for. Which types exist
-// depends on the chapter; an unregistered type is reported with the chapter that adds it.
-nlohmann::json material_from_mtl(const MtlMaterial& m) {
-    nlohmann::json j;
-    const bool rough = m.pr.has_value() && *m.pr > 0.0f;
-    if (m.illum == 4 || m.illum == 6 || m.illum == 7) {
-        j["type"] = rough ? "roughdielectric" : "dielectric";
-        j["ior"] = m.ni;
-        if (rough) j["roughness"] = *m.pr;
-    } else if ((m.pm.has_value() && *m.pm > 0.5f) || m.illum == 3 || m.illum == 5) {
-        j["type"] = rough ? "roughconductor" : "conductor";
-        j["specular_reflectance"] = {m.ks.r, m.ks.g, m.ks.b};
-        if (rough) j["roughness"] = *m.pr;
-    } else if (max_component(m.ks) > 0.0f) {
-        j["type"] = rough || m.ns > 0.0f ? "roughplastic" : "plastic";
-        j["albedo"] = {m.kd.r, m.kd.g, m.kd.b};
-        j["ior"] = m.ni;
-        if (rough) j["roughness"] = *m.pr;
-    } else {
-        j["type"] = "diffuse";
-        j["albedo"] = {m.kd.r, m.kd.g, m.kd.b};
-    }
-    if (!m.map_kd.empty()) j["albedo_texture"] = m.map_kd;
-    if (!is_black(m.ke)) j["emission"] = {m.ke.r, m.ke.g, m.ke.b};
-    return j;
 }
 
 // Builds one material from its JSON description through the registry.

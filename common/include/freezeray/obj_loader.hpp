@@ -20,7 +20,7 @@ struct MtlMaterial {
     Spectrum ke{0.0f};           // emitted radiance
     Spectrum tf{1.0f};           // transmission filter
     float ns = 0.0f;             // Phong exponent
-    float ni = 1.0f;             // index of refraction
+    float ni = 1.5f;             // index of refraction (1.5, the usual glass, when Ni is not written)
     float dissolve = 1.0f;       // d
     int illum = 2;               // illumination model
     std::optional<float> pr;     // PBR extension: roughness
