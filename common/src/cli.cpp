@@ -1,6 +1,8 @@
 // The command line shared by every chapter's renderer.
 #include "freezeray/cli.hpp"
 
+#include "commands.hpp"
+
 #include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
@@ -17,105 +19,10 @@ namespace freezeray {
 
 namespace {
 
-// Options of `render`, as typed (strings where we want our own checks and messages).
-struct RenderOptions {
-    std::string scene;
-    std::string integrator;
-    long long spp = 0;
-    bool spp_given = false;
-    double time_seconds = 0.0;
-    double target_error = 0.0;
-    std::string accelerator = "bruteforce";
-    int threads = 0;
-    long long seed = -1;
-    int max_depth = -1;
-    int width = 0;
-    int height = 0;
-    std::string out;
-    float exposure = 0.0f;
-    bool quiet = false;
-};
-
 std::string two_digit(int chapter) { return (chapter < 10 ? "0" : "") + std::to_string(chapter); }
-
-// Checks the options that CLI11 cannot check alone; throws InputError naming the option.
-void check_render_options(const RenderOptions& o) {
-    if (o.spp_given && o.spp < 1)
-        throw InputError("--spp", "the sample count must be at least 1 (got " + std::to_string(o.spp) + ")");
-    if (o.spp > (1LL << 40)) throw InputError("--spp", "the sample count " + std::to_string(o.spp) + " is absurd");
-    if (o.time_seconds < 0.0) throw InputError("--time", "must be positive");
-    if (o.target_error < 0.0) throw InputError("--target-error", "must be positive");
-    if (o.threads < 0 || o.threads > 1024) throw InputError("--threads", "must be between 1 and 1024 (0: every core)");
-    if (o.max_depth < -1) throw InputError("--max-depth", "must not be negative");
-    if (o.width < 0 || o.height < 0 || o.width > 65536 || o.height > 65536 ||
-        static_cast<long long>(o.width) * o.height > (1LL << 26))
-        throw InputError("--width/--height", "resolution must be between 1x1 and 65536x65536, at most 2^26 pixels");
-    if (o.seed < -1) throw InputError("--seed", "must not be negative");
-}
-
-std::string default_output_path(const std::string& scene_path, const std::string& integrator) {
-    std::filesystem::path p(scene_path);
-    std::string name = p.stem().string();
-    if (name == "scene") name = p.parent_path().filename().string();
-    std::filesystem::create_directories("out");
-    return "out/" + name + "-" + integrator + ".png";
-}
 
 void print_warnings(const Scene& scene) {
     for (const std::string& w : scene.warnings) std::cerr << "warning: " << w << "\n";
-}
-
-int run_render(const RenderOptions& options, const Registry& registry) {
-    check_render_options(options);
-    SceneLoadOptions load;
-    load.accelerator = options.accelerator;
-    load.width = options.width;
-    load.height = options.height;
-    Scene scene = load_scene(options.scene, registry, load);
-    print_warnings(scene);
-
-    RenderSettings settings;
-    settings.samples_per_pixel = options.spp_given ? static_cast<std::uint64_t>(options.spp) : scene.defaults.samples_per_pixel;
-    settings.time_seconds = options.time_seconds;
-    settings.target_error = options.target_error;
-    if (options.target_error > 0.0 && !options.spp_given) settings.samples_per_pixel = UINT64_MAX;  // error decides
-    settings.threads = options.threads;
-    settings.seed = options.seed >= 0 ? static_cast<std::uint64_t>(options.seed) : scene.defaults.seed;
-    settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.defaults.max_depth;
-
-    std::string integrator_name = options.integrator;
-    if (integrator_name.empty()) integrator_name = scene.defaults.integrator;
-    if (integrator_name.empty()) integrator_name = registry.list(CapabilityKind::Integrator).front().name;
-    const auto integrator = registry.make_integrator(integrator_name, settings, "--integrator");
-
-    const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
-    check_image_writable(out);  // before hours of rendering, not after
-
-    Progress progress(options.quiet);
-    RenderResult result = integrator->render(scene, settings, progress);
-
-    result.image.metadata["freezeray:integrator"] = integrator_name;
-    result.image.metadata["freezeray:scene"] = options.scene;
-    result.image.metadata["freezeray:samples_per_pixel"] = std::to_string(result.samples_per_pixel);
-    result.image.metadata["freezeray:seed"] = std::to_string(settings.seed);
-    result.image.metadata["freezeray:seconds"] = std::to_string(result.seconds);
-    result.image.metadata["freezeray:estimated_relative_mse"] = std::to_string(result.estimated_relative_mse);
-    result.image.metadata["freezeray:invalid_samples"] = std::to_string(result.invalid_samples);
-    ImageWriteOptions write_options;
-    write_options.exposure_stops = options.exposure;
-    write_image(out, result.image, write_options);
-
-    if (result.invalid_samples > 0)
-        std::cerr << "warning: " << result.invalid_samples
-                  << " samples were NaN, infinite or negative and were counted as zero; this is a bug in the "
-                     "integrator or a material, please report it with the scene\n";
-    if (!options.quiet) {
-        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, estimated relMSE %.4g\n", integrator_name.c_str(),
-                     result.image.width(), result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),
-                     format_duration(result.seconds).c_str(), result.estimated_relative_mse);
-    }
-    std::cout << out << "\n";
-    return 0;
 }
 
 int run_info(const std::string& scene_path, const Registry& registry) {
@@ -190,11 +97,25 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--height", render.height, "image height (default: the scene's)");
     render_command->add_option("--out", render.out, "output image: .exr, .pfm, .hdr or .png (default: out/SCENE-INTEGRATOR.png)");
     render_command->add_option("--exposure", render.exposure, "exposure in stops, for PNG output");
+    render_command->add_option("--sample-offset", render.sample_offset,
+                               "first sample index (to split one seed's samples over several renders; see merge)");
+    render_command->add_option("--checkpoint", render.checkpoint_seconds,
+                               "write the image and OUT.state atomically every this many seconds");
+    render_command->add_option("--resume", render.resume, "continue the render saved in this .state file");
     render_command->add_flag("--quiet", render.quiet, "no progress line");
 
     std::string info_scene;
     CLI::App* info_command = app.add_subcommand("info", "what a scene contains and which effects it calls for");
     info_command->add_option("scene", info_scene, "the scene's JSON file")->required();
+
+    std::string merge_out;
+    std::vector<std::string> merge_inputs;
+    bool merge_quiet = false;
+    CLI::App* merge_command = app.add_subcommand(
+        "merge", "combine renders of one scene made from disjoint samples (other seeds or --sample-offset ranges)");
+    merge_command->add_option("out", merge_out, "the merged image")->required();
+    merge_command->add_option("inputs", merge_inputs, "renders: EXR files written by render, or .state files")->required();
+    merge_command->add_flag("--quiet", merge_quiet, "no summary line");
 
     CompareRequest compare;
     std::string compare_integrators;
@@ -226,6 +147,7 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
         render.spp_given = spp->count() > 0;
         if (*render_command) return run_render(render, registry);
         if (*info_command) return run_info(info_scene, registry);
+        if (*merge_command) return run_merge(merge_out, merge_inputs, merge_quiet);
         if (*compare_command) {
             std::string name;
             for (char ch : compare_integrators + ",") {

@@ -1,7 +1,12 @@
 // The film: per-pixel running mean and variance.
 #include "freezeray/film.hpp"
 
+#include "freezeray/error.hpp"
 #include "freezeray/metrics.hpp"
+
+#include <algorithm>
+#include <istream>
+#include <ostream>
 
 namespace freezeray {
 
@@ -29,6 +34,53 @@ std::uint64_t Film::total_sample_count() const {
     std::uint64_t total = 0;
     for (const Pixel& p : pixels_) total += p.count;
     return total;
+}
+
+std::uint64_t Film::minimum_sample_count() const {
+    std::uint64_t fewest = UINT64_MAX;
+    for (const Pixel& p : pixels_) fewest = std::min(fewest, p.count);
+    return pixels_.empty() ? 0 : fewest;
+}
+
+Film Film::clone() const {
+    Film copy(width_, height_);
+    copy.pixels_ = pixels_;
+    copy.invalid_samples_ = invalid_samples_.load();
+    return copy;
+}
+
+namespace {
+
+// The state file starts with this tag and a format version.
+constexpr char StateTag[8] = {'F', 'R', 'F', 'I', 'L', 'M', '0', '1'};
+
+}  // namespace
+
+void Film::write_state(std::ostream& out) const {
+    out.write(StateTag, sizeof StateTag);
+    const std::int32_t size[2] = {width_, height_};
+    out.write(reinterpret_cast<const char*>(size), sizeof size);
+    const std::uint64_t invalid = invalid_samples_.load();
+    out.write(reinterpret_cast<const char*>(&invalid), sizeof invalid);
+    out.write(reinterpret_cast<const char*>(pixels_.data()),
+              static_cast<std::streamsize>(pixels_.size() * sizeof(Pixel)));
+}
+
+Film Film::read_state(std::istream& in, const std::string& where) {
+    char tag[sizeof StateTag];
+    std::int32_t size[2] = {0, 0};
+    std::uint64_t invalid = 0;
+    in.read(tag, sizeof tag);
+    if (!in || !std::equal(tag, tag + sizeof tag, StateTag)) throw InputError(where, "is not a FreezeRay render state");
+    in.read(reinterpret_cast<char*>(size), sizeof size);
+    in.read(reinterpret_cast<char*>(&invalid), sizeof invalid);
+    if (!in || size[0] < 1 || size[1] < 1 || static_cast<long long>(size[0]) * size[1] > (1LL << 26))
+        throw InputError(where, "has an invalid image size");
+    Film film(size[0], size[1]);
+    in.read(reinterpret_cast<char*>(film.pixels_.data()), static_cast<std::streamsize>(film.pixels_.size() * sizeof(Pixel)));
+    if (!in) throw InputError(where, "is truncated");
+    film.invalid_samples_ = invalid;
+    return film;
 }
 
 Image Film::mean() const {

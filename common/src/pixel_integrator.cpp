@@ -2,6 +2,7 @@
 // the sample count, the time budget or the target error is reached.
 #include "freezeray/integrator.hpp"
 
+#include "freezeray/error.hpp"
 #include "freezeray/parallel.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/scene.hpp"
@@ -24,6 +25,23 @@ bool stop_requested(const RenderSettings& settings) {
     return settings.stop_requested != nullptr && settings.stop_requested->load(std::memory_order_relaxed);
 }
 
+// How many samples per pixel the next pass adds. Passes double the sample count, so checkpoints
+// fall at 1, 2, 4, 8, ... samples; with a time budget the last pass is cut so as not to overshoot
+// it by much, and with checkpoints no pass takes much longer than their interval.
+std::uint64_t next_pass_size(std::uint64_t done, std::uint64_t sample_cap, std::uint64_t samples_this_run,
+                             double elapsed, const RenderSettings& settings) {
+    std::uint64_t pass = std::min(std::max<std::uint64_t>(1, done), sample_cap - done);
+    if (samples_this_run == 0) return pass;
+    const double seconds_per_sample = elapsed / static_cast<double>(samples_this_run);
+    if (settings.time_seconds > 0.0)
+        pass = std::clamp<std::uint64_t>(static_cast<std::uint64_t>(std::max(0.0, settings.time_seconds - elapsed) / seconds_per_sample),
+                                         1, pass);
+    if (settings.max_pass_seconds > 0.0)
+        pass = std::clamp<std::uint64_t>(static_cast<std::uint64_t>(settings.max_pass_seconds / seconds_per_sample), 1,
+                                         pass);
+    return pass;
+}
+
 }  // namespace
 
 // BOOK(pixel-loop)
@@ -37,33 +55,32 @@ RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& s
     // With a time budget or a target error, the sample count is only a cap (unlimited if by time).
     const std::uint64_t sample_cap = by_time ? UINT64_MAX : settings.samples_per_pixel;
 
-    Film film(width, height);
+    Film film = settings.resume ? settings.resume->clone() : Film(width, height);
+    if (film.width() != width || film.height() != height)
+        throw InputError("--resume", "the saved render is " + std::to_string(film.width()) + "x" +
+                                         std::to_string(film.height()) + " but this one is " + std::to_string(width) + "x" +
+                                         std::to_string(height));
     std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     progress.start("render", by_time ? 0 : sample_cap * width * height, settings.time_seconds);
 
     RenderResult result;
-    std::uint64_t done = 0;  // samples per pixel completed in every pixel
+    std::uint64_t samples_this_run = 0;  // samples per pixel added by this call (for timing)
+    std::uint64_t done = film.minimum_sample_count();  // samples every pixel has
     while (done < sample_cap && !result.interrupted) {
-        // Passes double the sample count, so checkpoints fall at 1, 2, 4, 8, ... samples.
-        std::uint64_t pass = std::max<std::uint64_t>(1, done);
-        pass = std::min(pass, sample_cap - done);
-        if (by_time && done > 0) {
-            // Do not overshoot the budget by more than a fraction of one pass.
-            const double seconds_per_sample = elapsed() / static_cast<double>(done);
-            const double left = settings.time_seconds - elapsed();
-            pass = std::clamp<std::uint64_t>(static_cast<std::uint64_t>(left / seconds_per_sample), 1, pass);
-        }
+        const std::uint64_t pass = next_pass_size(done, sample_cap, samples_this_run, elapsed(), settings);
+        const std::uint64_t target = done + pass;
         parallel_for_tiles(width, height, TileSize, threads, [&](const Tile& tile, int thread) {
             if (stop_requested(settings)) return;
             ScratchArena& arena = arenas[static_cast<std::size_t>(thread)];
             for (int y = tile.y0; y < tile.y1; ++y) {
                 for (int x = tile.x0; x < tile.x1; ++x) {
                     const auto pixel_index = static_cast<std::uint32_t>(y * width + x);
-                    for (std::uint64_t s = done; s < done + pass; ++s) {
+                    // Each pixel goes on from its own count (they differ only after an interrupted pass).
+                    for (std::uint64_t s = film.sample_count(x, y); s < target; ++s) {
                         // Every random number of this sample comes from its own stream.
-                        PCG32 random = make_pixel_stream(settings.seed, pixel_index, s);
+                        PCG32 random = make_pixel_stream(settings.seed, pixel_index, settings.first_sample + s);
                         const Vec2 film_position(x + random.next_float(), y + random.next_float());
                         arena.reset();
                         film.add_sample(x, y, li(camera.generate_ray(film_position), scene, random, arena));
@@ -73,7 +90,10 @@ RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& s
             progress.advance(pass * static_cast<std::uint64_t>((tile.x1 - tile.x0) * (tile.y1 - tile.y0)));
         });
         result.interrupted = stop_requested(settings);
-        if (!result.interrupted) done += pass;
+        if (!result.interrupted) {
+            done = target;
+            samples_this_run += pass;
+        }
         const double estimate = film.estimated_relative_mse();
         progress.set_estimated_error(estimate);
         if (settings.on_pass && !result.interrupted) {
@@ -89,11 +109,12 @@ RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& s
     progress.finish();
 
     result.image = film.mean();
+    result.samples_per_pixel = film.minimum_sample_count();
     result.variance = film.variance_of_mean();
-    result.samples_per_pixel = done;
     result.seconds = elapsed();
     result.invalid_samples = film.invalid_sample_count();
     result.estimated_relative_mse = film.estimated_relative_mse();
+    result.film = std::make_shared<const Film>(std::move(film));
     return result;
 }
 // END BOOK

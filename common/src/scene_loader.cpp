@@ -10,6 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -54,7 +55,9 @@ nlohmann::json parse_json_file(const std::string& path) {
     }
 }
 
-CameraDescription read_camera(const Parameters& p) {
+bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+CameraDescription read_camera(const Parameters& p, std::vector<std::string>& warnings) {
     CameraDescription camera;
     camera.position = p.require_vec3("position");
     camera.look_at = p.require_vec3("look_at");
@@ -72,9 +75,16 @@ CameraDescription read_camera(const Parameters& p) {
         camera.width = static_cast<int>(w);
         camera.height = static_cast<int>(h);
     }
+    // The camera's frame must exist in single precision (PinholeCamera normalises these).
     const Vec3 forward = camera.look_at - camera.position;
     if (glm::length(forward) == 0.0f) throw InputError(p.where("look_at"), "equals the camera position");
-    if (glm::length(glm::cross(forward, camera.up)) == 0.0f) throw InputError(p.where("up"), "is parallel to the view direction");
+    if (!is_finite(glm::normalize(forward)))
+        throw InputError(p.where("look_at"), "is too far from the camera position for single precision");
+    if (!is_finite(glm::normalize(camera.up))) throw InputError(p.where("up"), "must be a direction (not zero)");
+    const Vec3 right = glm::cross(glm::normalize(forward), glm::normalize(camera.up));
+    if (glm::length(right) == 0.0f || !is_finite(glm::normalize(right)))
+        throw InputError(p.where("up"), "is parallel to the view direction");
+    for (std::string& w : p.unused_key_warnings()) warnings.push_back(std::move(w));
     return camera;
 }
 
@@ -82,15 +92,23 @@ CameraDescription read_camera(const Parameters& p) {
 // translate * rotate * scale.
 Mat4 read_transform(const Parameters& p, std::vector<std::string>& warnings) {
     if (p.has("matrix")) {
+        for (const char* key : {"translate", "rotate", "scale"})
+            if (p.json().contains(key))
+                throw InputError(p.where(key), "cannot be combined with \"matrix\" (give one or the other)");
         const nlohmann::json& m = p.json().at("matrix");
         if (!m.is_array() || m.size() != 16) throw InputError(p.where("matrix"), "expected 16 numbers (row-major 4x4)");
         Mat4 result(1.0f);
         for (int row = 0; row < 4; ++row)
             for (int column = 0; column < 4; ++column) {
+                const std::string where = p.where("matrix") + "/" + std::to_string(row * 4 + column);
                 const nlohmann::json& e = m[static_cast<std::size_t>(row * 4 + column)];
-                if (!e.is_number()) throw InputError(p.where("matrix") + "/" + std::to_string(row * 4 + column), "expected a number");
-                result[column][row] = e.get<float>();  // GLM is column-major
+                if (!e.is_number()) throw InputError(where, "expected a number");
+                const double value = e.get<double>();
+                if (!std::isfinite(value) || std::abs(value) > 3.0e38)
+                    throw InputError(where, "the number is not finite in single precision");
+                result[column][row] = static_cast<float>(value);  // GLM is column-major
             }
+        for (std::string& w : p.unused_key_warnings()) warnings.push_back(std::move(w));
         return result;
     }
     Mat4 result(1.0f);
@@ -98,13 +116,14 @@ Mat4 read_transform(const Parameters& p, std::vector<std::string>& warnings) {
     if (p.has("rotate")) {
         const Parameters r = p.child("rotate");
         const Vec3 axis = r.require_vec3("axis");
-        if (glm::length(axis) == 0.0f) throw InputError(r.where("axis"), "must not be zero");
+        if (!is_finite(glm::normalize(axis))) throw InputError(r.where("axis"), "must be a direction (not zero)");
         result = glm::rotate(result, glm::radians(r.require_float("degrees")), glm::normalize(axis));
         for (std::string& w : r.unused_key_warnings()) warnings.push_back(std::move(w));
     }
     const Vec3 scale = p.has("scale") && p.json().at("scale").is_number() ? Vec3(p.get_float("scale", 1.0f))
                                                                           : p.get_vec3("scale", Vec3(1.0f));
     if (scale.x * scale.y * scale.z == 0.0f) throw InputError(p.where("scale"), "must not be zero");
+    for (std::string& w : p.unused_key_warnings()) warnings.push_back(std::move(w));
     return glm::scale(result, scale);
 }
 
@@ -142,7 +161,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     top.get_string("description", "");
     top.get_int("chapter", 1);
 
-    scene.camera_description = read_camera(top.child("camera"));
+    scene.camera_description = read_camera(top.child("camera"), scene.warnings);
     if (options.width > 0) scene.camera_description.width = options.width;
     if (options.height > 0) scene.camera_description.height = options.height;
     scene.camera.emplace(scene.camera_description);
@@ -206,7 +225,15 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         }
         for (TriangleMesh& mesh : obj.meshes) {
             for (std::uint32_t& f : mesh.face_materials) f = local_to_scene[f];
-            mesh.transform(transform);
+            try {
+                mesh.transform(transform);
+            } catch (const InputError& e) {
+                throw InputError(m.where("transform"), e.what());
+            }
+            for (const Vec3& p : mesh.positions)
+                if (!is_finite(p))
+                    throw InputError(m.where("transform"), "moves mesh '" + mesh.name +
+                                                               "' beyond the range of single precision");
             scene.meshes.push_back(std::move(mesh));
         }
     }

@@ -16,7 +16,7 @@ expect_failure() {
     local expected=()
     while [ "$1" != "--" ]; do expected+=("$1"); shift; done
     shift
-    rm -f "$work/out.png"
+    rm -rf "$work/out.png" "$work/report"
     local message status
     message=$("$renderer" "$@" 2>&1 >/dev/null)
     status=$?
@@ -26,6 +26,7 @@ expect_failure() {
         if ! grep -qF -- "$text" <<<"$message"; then echo "FAIL [$name]: message lacks '$text'"; ok=0; fi
     done
     if [ -e "$work/out.png" ] || ls "$work"/out.png.* >/dev/null 2>&1; then echo "FAIL [$name]: an output file was left"; ok=0; fi
+    if [ -e "$work/report" ]; then echo "FAIL [$name]: a report folder was left"; ok=0; fi
     if [ $ok -eq 1 ]; then echo "ok   [$name] (exit $status): $message"; else echo "     message was: $message"; failures=$((failures + 1)); fi
 }
 
@@ -71,6 +72,74 @@ expect_failure "output folder that does not exist" "$work/no/such/folder/out.png
 expect_failure "unknown output format" "out.tiff" -- render "$work/good.json" --out "$work/out.tiff"
 expect_failure "missing scene file" "nothing-here.json" -- render "$work/nothing-here.json" --out "$work/out.png"
 expect_failure "absurd resolution" "--width" -- render "$work/good.json" --width 100000 --height 100000 --out "$work/out.png"
+
+# expect_warning NAME EXPECTED_TEXT... -- ARGS: the run succeeds but warns with every text.
+expect_warning() {
+    local name=$1; shift
+    local expected=()
+    while [ "$1" != "--" ]; do expected+=("$1"); shift; done
+    shift
+    local message status ok=1
+    message=$("$renderer" "$@" 2>&1 >/dev/null)
+    status=$?
+    if [ $status -ne 0 ]; then echo "FAIL [$name]: exit status $status"; ok=0; fi
+    for text in "${expected[@]}"; do
+        if ! grep -qF -- "$text" <<<"$message"; then echo "FAIL [$name]: message lacks '$text'"; ok=0; fi
+    done
+    if [ $ok -eq 1 ]; then echo "ok   [$name] (warning): $message"; else echo "     message was: $message"; failures=$((failures + 1)); fi
+}
+
+# Issue 8's list, case by case.
+echo '[1, 2, 3]' > "$work/not-an-object.json"
+expect_failure "JSON that is not an object" "not-an-object.json: /" "expected an object" -- render "$work/not-an-object.json" --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"render\": {\"spp\": \"many\"} }" > "$work/wrong-type.json"
+expect_failure "wrong JSON type" "wrong-type.json" "/render/spp" "expected a whole number" -- render "$work/wrong-type.json" --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\", \"transform\": {\"rotate\": {\"axis\": [0, \"y\", 0], \"degrees\": 9}}}] }" > "$work/deep-wrong-type.json"
+expect_failure "wrong JSON type, deep" "deep-wrong-type.json" "/meshes/0/transform/rotate/axis/1" -- render "$work/deep-wrong-type.json" --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"rendr\": {} }" > "$work/unknown-key.json"
+expect_warning "unknown key" "unknown-key.json" "/rendr" "did you mean 'render'" -- render "$work/unknown-key.json" --spp 1 --quiet --out "$work/warned.png"
+echo '{"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [100000, 100000]}, "meshes": [{"file": "tri.obj"}]}' > "$work/huge.json"
+expect_failure "absurd resolution in the scene" "huge.json" "/camera/resolution" -- render "$work/huge.json" --out "$work/out.png"
+
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 3//1 2//1 1/' > "$work/cut.obj"
+echo "{ $camera, \"meshes\": [{\"file\": \"cut.obj\"}] }" > "$work/cut.json"
+expect_failure "truncated OBJ" "cut.obj:6" -- render "$work/cut.json" --out "$work/out.png"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n' > "$work/bad-index.obj"
+echo "{ $camera, \"meshes\": [{\"file\": \"bad-index.obj\"}] }" > "$work/bad-index.json"
+expect_failure "OBJ index out of range" "bad-index.obj:5" "out of range" -- render "$work/bad-index.json" --out "$work/out.png"
+printf 'mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > "$work/no-mtl.obj"
+echo "{ $camera, \"meshes\": [{\"file\": \"no-mtl.obj\"}] }" > "$work/no-mtl.json"
+expect_failure "missing MTL file" "no-mtl.obj:1" "nowhere.mtl" -- render "$work/no-mtl.json" --out "$work/out.png"
+printf 'mtllib bad-value.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl paint\nf 1 2 3\n' > "$work/bad-value.obj"
+printf 'newmtl paint\nKd 0.5 half 0.5\n' > "$work/bad-value.mtl"
+echo "{ $camera, \"meshes\": [{\"file\": \"bad-value.obj\"}] }" > "$work/bad-value.json"
+expect_failure "malformed MTL value" "bad-value.mtl:2" "half" -- render "$work/bad-value.json" --out "$work/out.png"
+
+# Corrupt and truncated images: a reference for compare (every chapter), a texture (chapter 02).
+echo "not an image" > "$work/garbage.exr"
+expect_failure "corrupt reference image" "garbage.exr" -- compare "$work/good.json" --integrators pt-naive --spp 1 --reference "$work/garbage.exr" --out "$work/report"
+"$renderer" render "$work/good.json" --spp 1 --quiet --out "$work/whole.exr" >/dev/null 2>&1
+head -c 200 "$work/whole.exr" > "$work/cut.exr"
+expect_failure "truncated reference image" "cut.exr" -- compare "$work/good.json" --integrators pt-naive --spp 1 --reference "$work/cut.exr" --out "$work/report"
+chapter02="$(dirname "$renderer")/ch02"
+if [ -x "$chapter02" ]; then
+    head -c -12 "$work/good.png" > "$work/cut.png"  # without its IEND chunk
+    echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"materials\": {\"paint\": {\"type\": \"diffuse\", \"albedo_texture\": \"cut.png\"}} }" > "$work/cut-texture.json"
+    renderer_saved=$renderer; renderer=$chapter02
+    expect_failure "truncated texture (ch02)" "cut-texture.json" "/materials/paint/albedo_texture" "cut.png" "truncated" -- render "$work/cut-texture.json" --out "$work/out.png"
+    renderer=$renderer_saved
+else
+    echo "skip [truncated texture]: no chapter 02 renderer beside $renderer"
+fi
+
+# Options.
+expect_failure "absurd sample count" "--spp" "absurd" -- render "$work/good.json" --spp 2000000000000 --out "$work/out.png"
+expect_failure "sample count beyond 64 bits" "--spp" -- render "$work/good.json" --spp 100000000000000000000 --out "$work/out.png"
+expect_failure "negative thread count" "--threads" -- render "$work/good.json" --threads -1 --out "$work/out.png"
+expect_failure "negative time" "--time" -- render "$work/good.json" --time -1 --out "$work/out.png"
+expect_failure "output under a file, not a folder" "good.json/out.png" "not a folder" -- render "$work/good.json" --out "$work/good.json/out.png"
+mkdir -p "$work/folder.png"
+expect_failure "output path that is a folder" "folder.png" "is a folder" -- render "$work/good.json" --out "$work/folder.png"
 
 if [ $failures -ne 0 ]; then echo "$failures bad-input case(s) failed"; exit 1; fi
 echo "every bad-input case was refused cleanly"

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <iosfwd>
 #include <vector>
 
 namespace freezeray {
@@ -17,6 +18,13 @@ public:
     Film(Film&& other) noexcept
         : width_(other.width_), height_(other.height_), pixels_(std::move(other.pixels_)),
           invalid_samples_(other.invalid_samples_.load()) {}
+    Film& operator=(Film&& other) noexcept {
+        width_ = other.width_;
+        height_ = other.height_;
+        pixels_ = std::move(other.pixels_);
+        invalid_samples_ = other.invalid_samples_.load();
+        return *this;
+    }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -29,6 +37,8 @@ public:
     void add_sample(int x, int y, const Spectrum& radiance);
 
     std::uint64_t sample_count(int x, int y) const { return pixels_[index(x, y)].count; }
+    // The fewest samples any pixel has: the sample count every pixel has reached.
+    std::uint64_t minimum_sample_count() const;
     std::uint64_t invalid_sample_count() const { return invalid_samples_.load(); }
     std::uint64_t total_sample_count() const;
 
@@ -45,6 +55,17 @@ public:
     // Restores a film from a mean and variance-of-mean image with a uniform sample count
     // (to resume a render, or merge renders). variance may be empty (zero variance).
     static Film from_images(const Image& mean, const Image& variance_of_mean, std::uint64_t samples);
+
+    // An exact copy (the running sums in full precision), e.g. to continue a render.
+    Film clone() const;
+
+    // The exact state, for resuming a render bit for bit: width, height, and every pixel's
+    // running mean, sum of squared deviations and count, in binary. read_state throws
+    // InputError(`where`, ...) on a truncated or inconsistent stream.
+    void write_state(std::ostream& out) const;
+    static Film read_state(std::istream& in, const std::string& where);
+
+    friend Film merge_films(const Film& a, const Film& b);
 
 private:
     struct Pixel {

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace freezeray {
@@ -31,10 +32,20 @@ struct RenderSettings {
     std::function<void(const Film& film, std::uint64_t samples_per_pixel, double seconds)> on_pass;
     // Set (by a signal handler) to stop after the current tile; the result holds what was done.
     const std::atomic<bool>* stop_requested = nullptr;
+    // Sample indices start here, so that several machines can each render a different range of
+    // one seed's samples and `merge` them (`--sample-offset`).
+    std::uint64_t first_sample = 0;
+    // A film to continue (`--resume`): every pixel goes on from its own sample count, so an
+    // interrupted and resumed render equals the uninterrupted one bit for bit.
+    std::shared_ptr<const Film> resume;
+    // > 0: passes are shortened so that none takes much longer than this (checkpoints are
+    // written between passes).
+    double max_pass_seconds = 0.0;
 };
 
 struct RenderResult {
     Image image;                     // the estimate (per-pixel mean)
+    std::shared_ptr<const Film> film;  // the film itself (to resume, or to merge exactly); may be null
     Image variance;                  // per-pixel variance of the mean (empty if not estimable)
     std::uint64_t samples_per_pixel = 0;
     double seconds = 0.0;

@@ -1,0 +1,43 @@
+// A render's saved state: what was rendered (scene, integrator, seed, ...) and its film, exactly.
+// Written by `--checkpoint` and on interruption, read by `--resume` and `merge`.
+#pragma once
+
+#include "freezeray/film.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace freezeray {
+
+struct RenderStateInfo {
+    std::string scene;
+    std::string integrator;
+    std::uint64_t seed = 0;
+    std::uint64_t first_sample = 0;
+    int max_depth = 0;
+    int width = 0, height = 0;
+};
+
+struct RenderState {
+    RenderStateInfo info;
+    std::shared_ptr<const Film> film;
+};
+
+// Writes atomically (a temporary file in the same folder, then renamed over `path`), so a power
+// cut leaves the old state or the new one, never a torn file. Throws InputError on failure.
+void write_render_state(const std::string& path, const RenderStateInfo& info, const Film& film);
+
+// Reads a state; throws InputError naming the file for a missing, foreign or truncated one.
+RenderState read_render_state(const std::string& path);
+
+// Throws InputError("--resume", ...) unless `saved` describes the same render as `wanted`
+// (scene, integrator, seed, sample offset, depth and size).
+void check_resumable(const RenderStateInfo& saved, const RenderStateInfo& wanted);
+
+// Combines two films of the same image made from disjoint samples: per pixel, the means are
+// weighted by their sample counts and the squared deviations combined exactly (Chan, Golub and
+// LeVeque, "Updating Formulae and a Pairwise Algorithm for Computing Sample Variances", 1979).
+Film merge_films(const Film& a, const Film& b);
+
+}  // namespace freezeray

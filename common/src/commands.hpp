@@ -1,0 +1,39 @@
+// The commands of the command line (cli.cpp parses, these run). Private to common/src.
+#pragma once
+
+#include "freezeray/registry.hpp"
+
+#include <string>
+#include <vector>
+
+namespace freezeray {
+
+// Options of `render`, as typed (checked in render_command.cpp, with messages naming the option).
+struct RenderOptions {
+    std::string scene;
+    std::string integrator;
+    long long spp = 0;
+    bool spp_given = false;
+    double time_seconds = 0.0;
+    double target_error = 0.0;
+    std::string accelerator = "bruteforce";
+    int threads = 0;
+    long long seed = -1;
+    long long sample_offset = 0;
+    int max_depth = -1;
+    int width = 0;
+    int height = 0;
+    std::string out;
+    float exposure = 0.0f;
+    double checkpoint_seconds = 0.0;
+    std::string resume;
+    bool quiet = false;
+};
+
+// `render`: returns the exit status (0, or 128 + signal when interrupted).
+int run_render(const RenderOptions& options, const Registry& registry);
+
+// `merge OUT INPUT...`: combines renders of one scene made from disjoint samples.
+int run_merge(const std::string& out, const std::vector<std::string>& inputs, bool quiet);
+
+}  // namespace freezeray

@@ -1,0 +1,173 @@
+// The `render` command: load, render, write; and the guarantees of a long render: a signal
+// writes what was done, checkpoints are atomic, and a resumed render equals the uninterrupted one.
+#include "commands.hpp"
+
+#include "freezeray/error.hpp"
+#include "freezeray/image.hpp"
+#include "freezeray/progress.hpp"
+#include "freezeray/render_state.hpp"
+#include "freezeray/scene.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <unistd.h>
+
+namespace freezeray {
+
+namespace {
+
+// Set by the first SIGINT or SIGTERM: the render stops after its current tiles and writes what
+// it has. A second signal ends the process at once (the conventional 128 + signal number).
+std::atomic<bool> stop_requested{false};
+volatile std::sig_atomic_t received_signal = 0;
+
+extern "C" void on_signal(int signal_number) {
+    if (received_signal != 0) _exit(128 + signal_number);
+    received_signal = signal_number;
+    stop_requested.store(true);
+}
+
+// Installs the handlers for the duration of a render and restores the defaults after it.
+struct SignalGuard {
+    SignalGuard() {
+        std::signal(SIGINT, on_signal);
+        std::signal(SIGTERM, on_signal);
+    }
+    ~SignalGuard() {
+        std::signal(SIGINT, SIG_DFL);
+        std::signal(SIGTERM, SIG_DFL);
+    }
+};
+
+// Checks the options that CLI11 cannot check alone; throws InputError naming the option.
+void check_render_options(const RenderOptions& o) {
+    if (o.spp_given && o.spp < 1)
+        throw InputError("--spp", "the sample count must be at least 1 (got " + std::to_string(o.spp) + ")");
+    if (o.spp > (1LL << 40)) throw InputError("--spp", "the sample count " + std::to_string(o.spp) + " is absurd");
+    if (o.time_seconds < 0.0) throw InputError("--time", "must be positive");
+    if (o.target_error < 0.0) throw InputError("--target-error", "must be positive");
+    if (o.threads < 0 || o.threads > 1024) throw InputError("--threads", "must be between 1 and 1024 (0: every core)");
+    if (o.max_depth < -1) throw InputError("--max-depth", "must not be negative");
+    if (o.width < 0 || o.height < 0 || o.width > 65536 || o.height > 65536 ||
+        static_cast<long long>(o.width) * o.height > (1LL << 26))
+        throw InputError("--width/--height", "resolution must be between 1x1 and 65536x65536, at most 2^26 pixels");
+    if (o.seed < -1) throw InputError("--seed", "must not be negative");
+    if (o.sample_offset < 0) throw InputError("--sample-offset", "must not be negative");
+    if (o.checkpoint_seconds < 0.0) throw InputError("--checkpoint", "must be positive (seconds between checkpoints)");
+}
+
+std::string default_output_path(const std::string& scene_path, const std::string& integrator) {
+    std::filesystem::path p(scene_path);
+    std::string name = p.stem().string();
+    if (name == "scene") name = p.parent_path().filename().string();
+    std::filesystem::create_directories("out");
+    return "out/" + name + "-" + integrator + ".png";
+}
+
+// The state file that goes with an output image.
+std::string state_path_for(const std::string& out) { return out + ".state"; }
+
+// The image of a film, with what it is in its metadata (EXR keeps it).
+Image annotated_image(const Film& film, const RenderStateInfo& info, double seconds, bool interrupted) {
+    Image image = film.mean();
+    image.metadata["freezeray:integrator"] = info.integrator;
+    image.metadata["freezeray:scene"] = info.scene;
+    image.metadata["freezeray:samples_per_pixel"] = std::to_string(film.minimum_sample_count());
+    image.metadata["freezeray:seed"] = std::to_string(info.seed);
+    image.metadata["freezeray:sample_offset"] = std::to_string(info.first_sample);
+    image.metadata["freezeray:seconds"] = std::to_string(seconds);
+    image.metadata["freezeray:estimated_relative_mse"] = std::to_string(film.estimated_relative_mse());
+    image.metadata["freezeray:invalid_samples"] = std::to_string(film.invalid_sample_count());
+    if (interrupted) image.metadata["freezeray:interrupted"] = "true";
+    return image;
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& options, const Registry& registry) {
+    check_render_options(options);
+    SceneLoadOptions load;
+    load.accelerator = options.accelerator;
+    load.width = options.width;
+    load.height = options.height;
+    Scene scene = load_scene(options.scene, registry, load);
+    for (const std::string& w : scene.warnings) std::cerr << "warning: " << w << "\n";
+
+    RenderSettings settings;
+    settings.samples_per_pixel = options.spp_given ? static_cast<std::uint64_t>(options.spp) : scene.defaults.samples_per_pixel;
+    settings.time_seconds = options.time_seconds;
+    settings.target_error = options.target_error;
+    if (options.target_error > 0.0 && !options.spp_given) settings.samples_per_pixel = UINT64_MAX;  // error decides
+    settings.threads = options.threads;
+    settings.seed = options.seed >= 0 ? static_cast<std::uint64_t>(options.seed) : scene.defaults.seed;
+    settings.first_sample = static_cast<std::uint64_t>(options.sample_offset);
+    settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.defaults.max_depth;
+
+    std::string integrator_name = options.integrator;
+    if (integrator_name.empty()) integrator_name = scene.defaults.integrator;
+    if (integrator_name.empty()) integrator_name = registry.list(CapabilityKind::Integrator).front().name;
+    const auto integrator = registry.make_integrator(integrator_name, settings, "--integrator");
+
+    const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
+    check_image_writable(out);  // before hours of rendering, not after
+    const RenderStateInfo info{options.scene, integrator_name, settings.seed, settings.first_sample, settings.max_depth,
+                               scene.camera->width(), scene.camera->height()};
+    if (!options.resume.empty()) {
+        const RenderState saved = read_render_state(options.resume);
+        check_resumable(saved.info, info);
+        settings.resume = saved.film;
+    }
+
+    // BOOK(checkpoints)
+    // Checkpoints: between passes (kept no longer than the interval), the image and the exact
+    // state are written, each atomically.
+    auto last_checkpoint = std::chrono::steady_clock::now();
+    if (options.checkpoint_seconds > 0.0) {
+        settings.max_pass_seconds = options.checkpoint_seconds;
+        settings.on_pass = [&](const Film& film, std::uint64_t, double seconds) {
+            const auto now = std::chrono::steady_clock::now();
+            if (std::chrono::duration<double>(now - last_checkpoint).count() < options.checkpoint_seconds) return;
+            write_render_state(state_path_for(out), info, film);
+            write_image(out, annotated_image(film, info, seconds, false), {options.exposure});
+            last_checkpoint = now;
+        };
+    }
+    // END BOOK
+
+    stop_requested.store(false);
+    received_signal = 0;
+    settings.stop_requested = &stop_requested;
+    Progress progress(options.quiet);
+    RenderResult result;
+    {
+        const SignalGuard guard;
+        result = integrator->render(scene, settings, progress);
+    }
+
+    write_image(out, annotated_image(*result.film, info, result.seconds, result.interrupted), {options.exposure});
+    if (result.interrupted || options.checkpoint_seconds > 0.0) write_render_state(state_path_for(out), info, *result.film);
+    if (result.invalid_samples > 0)
+        std::cerr << "warning: " << result.invalid_samples
+                  << " samples were NaN, infinite or negative and were counted as zero; this is a bug in the "
+                     "integrator or a material, please report it with the scene\n";
+    if (result.interrupted) {
+        std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp in every pixel) and "
+                  << state_path_for(out) << "; continue with the same command and --resume " << state_path_for(out)
+                  << "\n";
+        std::cout << out << "\n";
+        return 128 + static_cast<int>(received_signal);
+    }
+    if (!options.quiet) {
+        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, estimated relMSE %.4g\n", integrator_name.c_str(),
+                     result.image.width(), result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),
+                     format_duration(result.seconds).c_str(), result.estimated_relative_mse);
+    }
+    std::cout << out << "\n";
+    return 0;
+}
+
+}  // namespace freezeray
