@@ -126,3 +126,86 @@ TEST_CASE("unknown keys give a warning with the nearest valid name", "[unit][sce
     REQUIRE(scene.warnings.size() == 1u);
     CHECK_THAT(scene.warnings[0], Catch::Contains("'rendr'") && Catch::Contains("did you mean 'render'"));
 }
+
+TEST_CASE("a wrong JSON type at any level names its path", "[unit][scene]") {
+    TemporaryFolder folder;
+    const std::string good_camera = R"({"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40})";
+    // Each case: the scene text and the JSON path its message must name.
+    const std::pair<std::string, std::string> cases[] = {
+        {R"([1, 2, 3])", "scene.json: /"},
+        {R"({"camera": [0, 0, 5], "meshes": [{"file": "tri.obj"}]})", "/camera"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": {"file": "tri.obj"}})", "/meshes"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": ["tri.obj"]})", "/meshes/0"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": 7}]})", "/meshes/0/file"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj", "transform": "identity"}]})",
+         "/meshes/0/transform"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"rotate": 30}}]})",
+         "/meshes/0/transform/rotate"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"scale": "big"}}]})",
+         "/meshes/0/transform/scale"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"matrix": [1, 0]}}]})",
+         "/meshes/0/transform/matrix"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj", "material": 3}]})", "/meshes/0/material"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj"}], "materials": []})", "/materials"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj"}], "materials": {"paint": 0.5}})",
+         "/materials/paint"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj"}], "materials": {"paint": {"type": 2}}})",
+         "/materials/paint/type"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj"}], "render": [16]})", "/render"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj"}], "render": {"spp": 1.5}})",
+         "/render/spp"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj"}], "render": {"integrator": false}})",
+         "/render/integrator"},
+        {R"({"camera": )" + good_camera + R"(, "meshes": [{"file": "tri.obj"}], "chapter": "two"})", "/chapter"},
+        {R"({"camera": {"position": "here", "look_at": [0, 0, 0], "fov_vertical_degrees": 40}, "meshes": [{"file": "tri.obj"}]})",
+         "/camera/position"},
+        {R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": [40]}, "meshes": [{"file": "tri.obj"}]})",
+         "/camera/fov_vertical_degrees"},
+        {R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": "hd"}, "meshes": [{"file": "tri.obj"}]})",
+         "/camera/resolution"},
+    };
+    for (const auto& [text, where] : cases) {
+        INFO(text);
+        CHECK_THAT(load_error(make_scene(folder, text)), Catch::Contains(where) && Catch::Contains("scene.json"));
+    }
+}
+
+TEST_CASE("numbers beyond single precision and impossible frames are refused with their path", "[unit][scene]") {
+    TemporaryFolder folder;
+    const std::string mesh = R"(, "meshes": [{"file": "tri.obj"}]})";
+    SECTION("a camera whose view direction overflows") {
+        const std::string path = make_scene(folder, R"({"camera": {"position": [3e38, 0, 0], "look_at": [-3e38, 0, 0], "fov_vertical_degrees": 40})" + mesh);
+        CHECK_THAT(load_error(path), Catch::Contains("/camera/look_at"));
+    }
+    SECTION("a zero up vector") {
+        const std::string path = make_scene(folder, R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 0, 0], "fov_vertical_degrees": 40})" + mesh);
+        CHECK_THAT(load_error(path), Catch::Contains("/camera/up"));
+    }
+    SECTION("a matrix entry too large for a float") {
+        const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"matrix": [1e39,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}]})");
+        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform/matrix/0") && Catch::Contains("single precision"));
+    }
+    SECTION("a matrix together with translate") {
+        const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "translate": [1, 2, 3]}}]})");
+        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform/translate") && Catch::Contains("matrix"));
+    }
+    SECTION("a transform that cannot be inverted names the mesh's JSON path") {
+        const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"scale": [1e30, 1e30, 1e30]}}]})");
+        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform"));
+    }
+    SECTION("a transform that moves the mesh beyond single precision") {
+        const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"translate": [3e38, 0, 0], "scale": [1e38, 1, 1]}}]})");
+        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform"));
+    }
+}
+
+TEST_CASE("unknown keys of the camera and of a transform give warnings with the nearest name", "[unit][scene]") {
+    TemporaryFolder folder;
+    const std::string path = make_scene(folder, R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolutoin": [8, 8]},
+        "meshes": [{"file": "tri.obj", "transform": {"translation": [1, 0, 0]}}]})");
+    const Scene scene = load_scene(path, testing::full_registry());
+    REQUIRE(scene.warnings.size() == 2u);
+    CHECK_THAT(scene.warnings[0], Catch::Contains("/camera/resolutoin") && Catch::Contains("did you mean 'resolution'"));
+    CHECK_THAT(scene.warnings[1], Catch::Contains("/meshes/0/transform/translation") &&
+                                      Catch::Contains("did you mean 'translate'"));
+}
