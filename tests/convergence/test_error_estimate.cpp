@@ -1,6 +1,7 @@
 // The error a render estimates from its own per-pixel variance, against the true error measured
 // with a reference.
 #include "freezeray/metrics.hpp"
+#include "freezeray/progress.hpp"
 
 #include "test_scenes.hpp"
 
@@ -42,4 +43,24 @@ TEST_CASE("the reference-free relMSE estimate matches the true relMSE on the Cor
     INFO("estimated / measured relMSE over four seeds: " << ratio);
     CHECK(ratio >= 0.7);
     CHECK(ratio <= 1.4);
+}
+
+TEST_CASE("a target error stops the render once the estimated relMSE reaches it", "[convergence][error-estimate]") {
+    // The furnace with pt-is: its estimate falls steadily; the render must stop at the first
+    // pass whose estimate is at or below the target, well before the sample cap.
+    SceneLoadOptions options;
+    options.width = options.height = 16;
+    const Scene scene = load_scene(testing::scene_path("furnace/scene.json"), testing::full_registry(), options);
+    RenderSettings settings;
+    settings.samples_per_pixel = 1u << 20;  // the cap, far away
+    settings.target_error = 2e-3;
+    settings.seed = 4;
+    std::vector<double> estimates;
+    settings.on_pass = [&](const Film& film, std::uint64_t, double) { estimates.push_back(film.estimated_relative_mse()); };
+    Progress quiet(true);
+    const RenderResult result = testing::full_registry().make_integrator("pt-is", settings, "test")->render(scene, settings, quiet);
+    REQUIRE(estimates.size() >= 2u);
+    CHECK(result.samples_per_pixel < settings.samples_per_pixel);
+    CHECK(result.estimated_relative_mse <= settings.target_error);
+    CHECK(estimates[estimates.size() - 2] > settings.target_error);  // it did not stop later than needed
 }
