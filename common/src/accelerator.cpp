@@ -39,7 +39,13 @@ Hit make_hit(const std::vector<TriangleMesh>& meshes, std::uint32_t mesh_index, 
     hit.position = th.b0 * p0 + th.b1 * p1 + th.b2 * p2;
     hit.position_error = gamma_bound(7) * (glm::abs(th.b0 * p0) + glm::abs(th.b1 * p1) + glm::abs(th.b2 * p2));
 
-    hit.geometric_normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    // The cross product is divided by its largest component before normalising: for a triangle
+    // whose edges are below about 1e-19 (one ulp of coordinates near 1e-5, say) its squared
+    // length underflows to zero, and normalize() gave NaN, which turned every path that met the
+    // triangle black (tests/stability, scenes/hard/tiny-triangle). obj_loader.cpp keeps exactly
+    // the triangles whose cross product is not zero, so the division is by a non-zero number.
+    const Vec3 cross = glm::cross(p1 - p0, p2 - p0);
+    hit.geometric_normal = glm::normalize(cross / max_component(glm::abs(cross)));
     if (!mesh.normals.empty()) {
         const Vec3 n = th.b0 * mesh.normals[idx[0]] + th.b1 * mesh.normals[idx[1]] + th.b2 * mesh.normals[idx[2]];
         const float length = glm::length(n);

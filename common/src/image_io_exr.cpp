@@ -4,6 +4,7 @@
 // attributes; we read any scanline or tiled single-part file with R, G, B (half, float or uint)
 // or a single grey channel, ignoring alpha and other channels.
 #include "freezeray/error.hpp"
+#include "image_io_exr_check.hpp"
 #include "image_io_formats.hpp"
 
 #include <tinyexr.h>
@@ -88,6 +89,8 @@ Image decode_exr(const Bytes& bytes, const std::string& path) {
         throw InputError(path, "multi-part and deep OpenEXR files are not supported");
     }
 
+    ExrHeaderCheck(bytes, path).run();
+
     LoadedExr exr;
     const char* message = nullptr;
     int code = ParseEXRHeaderFromMemory(&exr.header, &version, bytes.data(), bytes.size(), &message);
@@ -115,10 +118,13 @@ Image decode_exr(const Bytes& bytes, const std::string& path) {
         }
     }
 
+    // When a scanline decode fails, tinyexr 1.0.1 calls FreeEXRImage before it has set the
+    // image's channel count, so without this the channel buffers would leak (found by fuzz_image).
+    exr.image.num_channels = exr.header.num_channels;
     code = LoadEXRImageFromMemory(&exr.image, &exr.header, bytes.data(), bytes.size(), &message);
     if (code != TINYEXR_SUCCESS) {
-        // tinyexr 1.0.1 already released the pixels of a failed decode (leaking a little) but left
-        // the pointers dangling: forget them, or our destructor would free them a second time.
+        // tinyexr 1.0.1 already released the pixels of a failed decode but left the pointers
+        // dangling: forget them, or our destructor would free them a second time.
         InitEXRImage(&exr.image);
         throw InputError(path, "cannot decode the OpenEXR pixels: " + take_error(message, code));
     }

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -57,6 +58,8 @@ public:
         const unsigned char* next = bytes_.data() + position_;
         return next[0] == 2 && next[1] == 2 && (next[2] & 0x80) == 0 && ((next[2] << 8) | next[3]) == width;
     }
+
+    std::size_t remaining() const { return bytes_.size() - position_; }
 
     [[noreturn]] void fail(const std::string& reason) const {
         throw InputError(path_, "not a valid Radiance HDR file: " + reason);
@@ -146,6 +149,15 @@ Image decode_hdr(const Bytes& bytes, const std::string& path) {
     const int height = parse_size(resolution.substr(3, x_marker - 3), reader);
     const int width = parse_size(resolution.substr(x_marker + 4), reader);
     check_image_size(width, height, path);
+    // The fewest bytes that can hold the scanlines: run-length encoded, the 4-byte marker and,
+    // for each component, runs of at most 127 pixels in 2 bytes; flat, 4 bytes a pixel. Checked
+    // before allocating, so that a 60-byte file cannot claim gigabytes (found by fuzz_image).
+    const bool may_be_encoded = width >= 8 && width <= 0x7fff;
+    const std::uint64_t smallest_scanline = may_be_encoded ? 4 + 8 * ((std::uint64_t(width) + 126) / 127) : 4 * std::uint64_t(width);
+    if (smallest_scanline * std::uint64_t(height) > reader.remaining()) {
+        reader.fail("truncated: " + std::to_string(reader.remaining()) + " bytes cannot hold " + std::to_string(width) +
+                    "x" + std::to_string(height) + " pixels");
+    }
 
     Image image(width, height);
     std::vector<unsigned char> rgbe(static_cast<std::size_t>(width) * 4);

@@ -8,14 +8,25 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace freezeray::image_io {
 
 namespace {
+
+// The extension of `path` in lower case, with its dot.
+std::string lowercase_extension(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
 
 // Frees pixels that stb_image allocated.
 struct StbFree {
@@ -28,14 +39,143 @@ std::string stb_reason() {
     return reason != nullptr ? reason : "unknown error";
 }
 
-// True for a PNG file (by its 8-byte signature) that lacks its closing IEND chunk: stb_image
-// would decode what it finds, so a file cut short could otherwise pass for a complete one.
-bool is_truncated_png(const Bytes& bytes) {
-    const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (bytes.size() < 8 || !std::equal(signature, signature + 8, bytes.begin())) return false;
-    const unsigned char end_chunk[4] = {'I', 'E', 'N', 'D'};
-    const auto found = std::find_end(bytes.begin(), bytes.end(), end_chunk, end_chunk + 4);
-    return found == bytes.end() || bytes.end() - found < 8;  // the chunk type, then its 4-byte CRC
+// The 8-bit formats, told by their first bytes. TGA has no signature: it is what is left.
+enum class Format { png, jpeg, bmp, unsupported, tga };
+
+bool starts_with(const Bytes& bytes, std::string_view prefix) {
+    return bytes.size() >= prefix.size() &&
+           std::equal(prefix.begin(), prefix.end(), bytes.begin(),
+                      [](char a, unsigned char b) { return static_cast<unsigned char>(a) == b; });
+}
+
+// The format stb_image will decode `bytes` as, by the signatures its loaders test for. GIF, PSD,
+// Softimage PIC and PNM, which stb_image also reads, are "unsupported": they are not among
+// the formats the renderer documents, and a truncated one would decode as black.
+Format format_of(const Bytes& bytes) {
+    using namespace std::string_view_literals;
+    if (starts_with(bytes, "\x89PNG\r\n\x1a\n"sv)) return Format::png;
+    if (starts_with(bytes, "\xff\xd8"sv)) return Format::jpeg;
+    if (starts_with(bytes, "BM"sv)) return Format::bmp;
+    if (starts_with(bytes, "GIF8"sv) || starts_with(bytes, "8BPS"sv) || starts_with(bytes, "\x53\x80\xf6\x34"sv) ||
+        starts_with(bytes, "P5"sv) || starts_with(bytes, "P6"sv))
+        return Format::unsupported;
+    return Format::tga;
+}
+
+std::uint32_t little_endian(const Bytes& bytes, std::size_t at, int size) {
+    std::uint32_t value = 0;
+    for (int i = size - 1; i >= 0; --i) value = (value << 8) | bytes[at + static_cast<std::size_t>(i)];
+    return value;
+}
+
+// The stb_image of Debian 12 builds a Huffman table without checking that its 16 code counts
+// add up to at most 256 codes (ITU T.81, B.2.4.2), and writes past the end of its arrays when
+// they do not (found by fuzz_image; later stb_image versions check it). This walks the marker
+// segments of a JPEG file (T.81, B.1.1.2: 0xFF, a code, a 2-byte big-endian length that counts
+// itself) and refuses a DHT segment with such a table. Entropy-coded data after a scan is
+// skipped up to the next marker (0xFF followed by neither 0 nor a restart code).
+void check_jpeg_huffman_tables(const Bytes& bytes, const std::string& path) {
+    std::size_t position = 2;  // after the start-of-image marker
+    while (position + 4 <= bytes.size()) {
+        if (bytes[position] != 0xff) {  // entropy-coded data
+            ++position;
+            continue;
+        }
+        const unsigned char code = bytes[position + 1];
+        if (code == 0xff || code == 0x00 || code == 0x01 || (code >= 0xd0 && code <= 0xd7)) {  // fill, stuffing, restarts
+            position += code == 0xff ? 1 : 2;
+            continue;
+        }
+        if (code == 0xd9) return;  // end of image
+        const std::size_t length = (std::size_t(bytes[position + 2]) << 8) | bytes[position + 3];
+        const std::size_t end = position + 2 + length;
+        if (end > bytes.size())  // stb_image would read the missing bytes as zeros
+            throw InputError(path, "the JPEG file is truncated (a marker segment runs past its end)");
+        if (code == 0xc4) {
+            for (std::size_t table = position + 4; table < end;) {
+                if (end - table < 17) throw InputError(path, "not a valid JPEG file: a Huffman table is cut short");
+                std::size_t codes = 0;
+                for (std::size_t i = 1; i <= 16; ++i) codes += bytes[table + i];
+                if (codes > 256)
+                    throw InputError(path, "not a valid JPEG file: a Huffman table has " + std::to_string(codes) +
+                                               " codes (at most 256)");
+                table += 17 + codes;
+            }
+        }
+        position = std::max(end, position + 4);
+    }
+}
+
+// stb_image reads past the end of a file as zeros, so a truncated JPEG, BMP or TGA decodes
+// without an error (found by fuzz_image: a 40-byte BMP header "decoding" as a large black
+// image). These checks refuse a file that stops before its pixel data does. A PNG must end
+// with its IEND chunk and a JPEG with its end-of-image marker; for BMP and TGA the header says
+// how many bytes follow. Headers too short or odd to check are left to stb_image to refuse.
+void check_complete(const Bytes& bytes, Format format, const std::string& path) {
+    const auto truncated = [&](const char* name, const std::string& detail) {
+        throw InputError(path, std::string("the ") + name + " file is truncated (" + detail + ")");
+    };
+    if (format == Format::png) {
+        const unsigned char end_chunk[4] = {'I', 'E', 'N', 'D'};
+        const auto found = std::find_end(bytes.begin(), bytes.end(), end_chunk, end_chunk + 4);
+        if (found == bytes.end() || bytes.end() - found < 8)  // the chunk type, then its 4-byte CRC
+            truncated("PNG", "its final IEND chunk is missing");
+    } else if (format == Format::jpeg) {
+        const unsigned char end_marker[2] = {0xff, 0xd9};
+        if (std::find_end(bytes.begin() + 2, bytes.end(), end_marker, end_marker + 2) == bytes.end())
+            truncated("JPEG", "its end-of-image marker is missing");
+        check_jpeg_huffman_tables(bytes, path);
+    } else if (format == Format::bmp) {
+        // BITMAPFILEHEADER (14 bytes), then an OS/2 header (12 bytes: 16-bit sizes) or a Windows
+        // one (40 bytes or more: 32-bit sizes); rows are padded to 4 bytes, the last one possibly not.
+        if (bytes.size() < 18) truncated("BMP", "its header is cut short");
+        const std::uint32_t header_size = little_endian(bytes, 14, 4);
+        const bool known = header_size == 12 || header_size == 40 || header_size == 56 || header_size == 108 ||
+                           header_size == 124;
+        if (!known) return;  // stb_image refuses it
+        if (bytes.size() < 14 + header_size) truncated("BMP", "its header is cut short");
+        const std::uint64_t offset = little_endian(bytes, 10, 4);
+        const bool os2 = header_size == 12;
+        const std::int64_t width = os2 ? little_endian(bytes, 18, 2) : static_cast<std::int32_t>(little_endian(bytes, 18, 4));
+        std::int64_t height = os2 ? static_cast<std::int16_t>(little_endian(bytes, 20, 2))
+                                  : static_cast<std::int32_t>(little_endian(bytes, 22, 4));
+        const std::uint32_t bits = little_endian(bytes, os2 ? 24 : 28, 2);
+        // stb_image refuses compression 1, 2 (run-length) and 4 or more, and reads the others,
+        // negative ones included, as uncompressed rows.
+        const auto compression = os2 ? 0 : static_cast<std::int32_t>(little_endian(bytes, 30, 4));
+        height = height < 0 ? -height : height;
+        if (compression == 1 || compression == 2 || compression >= 4 || width <= 0 || height == 0 || bits == 0 ||
+            bits > 32)
+            return;
+        const std::uint64_t row = (static_cast<std::uint64_t>(width) * bits + 7) / 8;
+        const std::uint64_t stride = (static_cast<std::uint64_t>(width) * bits + 31) / 32 * 4;
+        const std::uint64_t needed = offset + stride * static_cast<std::uint64_t>(height - 1) + row;
+        if (needed > bytes.size())
+            truncated("BMP", "its header announces " + std::to_string(needed) + " bytes, the file has " +
+                                 std::to_string(bytes.size()));
+    } else if (format == Format::tga) {
+        // The 18-byte header, an image id, a colour map, then the pixels: raw (types 1 to 3) or
+        // run-length packets (types 9 to 11) of at most 128 pixels, each a count byte and one
+        // pixel (a run) or that many pixels (raw).
+        if (bytes.size() < 18) truncated("TGA", "its 18-byte header is cut short");
+        const std::uint32_t type = bytes[2];
+        const std::uint64_t map_bytes = bytes[1] != 0 ? little_endian(bytes, 5, 2) * ((bytes[7] + 7u) / 8u) : 0;
+        std::uint64_t position = 18 + bytes[0] + map_bytes;
+        const std::uint64_t pixels = std::uint64_t(little_endian(bytes, 12, 2)) * little_endian(bytes, 14, 2);
+        const std::uint64_t pixel_bytes = (bytes[16] + 7u) / 8u;
+        if (type >= 1 && type <= 3) {
+            if (position + pixels * pixel_bytes > bytes.size()) truncated("TGA", "its pixel data ends early");
+        } else if (type >= 9 && type <= 11) {
+            for (std::uint64_t done = 0; done < pixels;) {
+                if (position >= bytes.size()) truncated("TGA", "its run-length data ends early");
+                const unsigned char packet = bytes[position++];
+                const std::uint64_t count = (packet & 0x7fu) + 1u;
+                position += (packet & 0x80u) != 0 ? pixel_bytes : count * pixel_bytes;
+                if (position > bytes.size()) truncated("TGA", "its run-length data ends early");
+                done += count;
+            }
+        }
+    }
 }
 
 // One channel as an 8-bit sRGB code value, after clamping to [0, 1].
@@ -64,9 +204,15 @@ Image decode_srgb(const Bytes& bytes, const std::string& path) {
         // stb would quietly tone-map it to 8 bits; the user surely wanted the radiance.
         throw InputError(path, "contains Radiance HDR data; name it .hdr to read it as such");
     }
-    if (is_truncated_png(bytes)) {
-        throw InputError(path, "the PNG file is truncated (its final IEND chunk is missing)");
+    const Format format = format_of(bytes);
+    if (format == Format::unsupported) {
+        throw InputError(path, "is a GIF, PSD, PIC or PNM file; only PNG, JPEG, BMP and TGA are read");
     }
+    if (format == Format::tga && lowercase_extension(path) != ".tga") {
+        // TGA has no signature: anything unrecognised would be tried as one.
+        throw InputError(path, "not a valid PNG, JPEG or BMP file (no known signature)");
+    }
+    check_complete(bytes, format, path);
     // Check the size in the header before stb allocates anything.
     int width = 0, height = 0, channels = 0;
     if (stbi_info_from_memory(bytes.data(), length, &width, &height, &channels) == 0) {

@@ -200,9 +200,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         for (std::string& w : m.unused_key_warnings()) scene.warnings.push_back(std::move(w));
 
         ObjLoadResult obj = load_obj(obj_path);
-        if (obj.dropped_degenerate_triangles > 0)
-            scene.warnings.push_back(obj_path + ": dropped " + std::to_string(obj.dropped_degenerate_triangles) +
-                                     " degenerate triangles (zero area, repeated vertex or non-finite coordinate)");
+        // (load_obj's warnings already say how many degenerate triangles it dropped.)
         for (std::string& w : obj.warnings) scene.warnings.push_back(std::move(w));
 
         // Map this file's MTL materials onto scene materials (shared by name across files).

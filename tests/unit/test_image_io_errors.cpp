@@ -219,3 +219,57 @@ TEST_CASE("corrupted bytes never crash a reader: it decodes or throws InputError
         }
     }
 }
+
+// stb_image reads past the end of its buffer as zeros, so without our checks a truncated JPEG,
+// BMP or TGA would decode as an image with a black end (found by the fuzz_image target).
+TEST_CASE("truncated JPEG, BMP and TGA files and unsupported stb formats throw InputError", "[unit][image]") {
+    TemporaryFolder folder;
+    const auto refused_with = [&](const std::string& name, const std::vector<unsigned char>& bytes,
+                                  const std::string& reason) {
+        INFO(name);
+        write_bytes(folder.file(name), bytes);
+        CHECK_THAT(input_error_message([&] { read_image(folder.file(name)); }),
+                   Contains(folder.file(name)) && Contains(reason));
+    };
+    const auto little_endian = [](std::vector<unsigned char>& bytes, std::uint32_t value, int size) {
+        for (int i = 0; i < size; ++i) bytes.push_back(static_cast<unsigned char>(value >> (8 * i)));
+    };
+
+    // A 4x4 JPEG written by stb_image_write (a seed of the fuzz_image corpus, after its selector byte).
+    std::vector<unsigned char> jpeg = read_bytes(std::string(FREEZERAY_SOURCE_DIR) + "/tests/fuzz/corpus/image/jpeg.bin");
+    REQUIRE(jpeg.size() > 100);
+    jpeg.erase(jpeg.begin());
+    write_bytes(folder.file("whole.jpg"), jpeg);
+    CHECK(read_image(folder.file("whole.jpg")).width() == 4);
+    refused_with("cut.jpg", std::vector<unsigned char>(jpeg.begin(), jpeg.end() - 40), "truncated");
+
+    // A 64x64 24-bit BMP: 54 header bytes, then 64 rows of 192 bytes.
+    std::vector<unsigned char> bmp = {'B', 'M'};
+    little_endian(bmp, 54 + 64 * 192, 4);
+    little_endian(bmp, 0, 4);
+    little_endian(bmp, 54, 4);
+    for (const std::uint32_t field : {40u, 64u, 64u}) little_endian(bmp, field, 4);
+    little_endian(bmp, 1, 2);
+    little_endian(bmp, 24, 2);
+    for (int i = 0; i < 6; ++i) little_endian(bmp, 0, 4);
+    bmp.resize(54 + 64 * 192, 128);
+    write_bytes(folder.file("whole.bmp"), bmp);
+    CHECK(read_image(folder.file("whole.bmp")).width() == 64);
+    refused_with("cut.bmp", std::vector<unsigned char>(bmp.begin(), bmp.begin() + 54 + 10), "truncated");
+
+    // A 16x16 uncompressed TGA, and a run-length one whose last packet is missing.
+    std::vector<unsigned char> tga = {0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 16, 0, 24, 0};
+    tga.resize(18 + 16 * 16 * 3, 200);
+    write_bytes(folder.file("whole.tga"), tga);
+    CHECK(read_image(folder.file("whole.tga")).width() == 16);
+    refused_with("cut.tga", std::vector<unsigned char>(tga.begin(), tga.end() - 3), "truncated");
+    std::vector<unsigned char> rle = {0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 16, 0, 16, 0, 24, 0};
+    rle.insert(rle.end(), {0xff, 1, 2, 3});  // one run of 128 pixels: the other 128 are missing
+    refused_with("cut-rle.tga", rle, "truncated");
+    // Under another extension, bytes without a signature are not tried as TGA.
+    refused_with("tga-named.png", tga, "not a valid PNG, JPEG or BMP file");
+
+    refused_with("animation.png", {'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0, 0, 0}, "only PNG, JPEG, BMP and TGA");
+    refused_with("portable.png", {'P', '6', '\n', '1', ' ', '1', '\n', '2', '5', '5', '\n', 1, 2, 3},
+                 "only PNG, JPEG, BMP and TGA");
+}

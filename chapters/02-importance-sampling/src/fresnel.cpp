@@ -79,9 +79,12 @@ PolarisedReflectance polarised_reflectance(float cos_theta_i, float eta) {
 float fresnel_complex(float cos_theta_i, std::complex<float> eta) {
     if (eta == std::complex<float>(0.0f)) return 1.0f;  // the limit of a perfect conductor
     cos_theta_i = std::clamp(cos_theta_i, 0.0f, 1.0f);
-    const float sin2_theta_i = 1.0f - cos_theta_i * cos_theta_i;
-    const std::complex<float> sin2_theta_t = sin2_theta_i / (eta * eta);
-    const std::complex<float> cos_theta_t = std::sqrt(1.0f - sin2_theta_t);
+    // cos^2(theta_t) = 1 - sin^2(theta_i) / eta^2, written as ((eta^2 - 1) + cos^2(theta_i)) / eta^2:
+    // the same number without the cancellation 1 - (1 - cos^2), which rounds cos^2 away at grazing
+    // angles. With it, a conductor with eta = 1 and k = 0 (what an MTL Ks of 0 gives) reflected 1e-16
+    // everywhere and everything below cos theta = 2.4e-4 (tests/stability, conductor-k0/eta-1.json).
+    const std::complex<float> eta2 = eta * eta;
+    const std::complex<float> cos_theta_t = std::sqrt(((eta2 - 1.0f) + cos_theta_i * cos_theta_i) / eta2);
     const std::complex<float> r_parallel = (eta * cos_theta_i - cos_theta_t) / (eta * cos_theta_i + cos_theta_t);
     const std::complex<float> r_perpendicular = (cos_theta_i - eta * cos_theta_t) / (cos_theta_i + eta * cos_theta_t);
     return 0.5f * (std::norm(r_parallel) + std::norm(r_perpendicular));

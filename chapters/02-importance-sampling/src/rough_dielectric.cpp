@@ -26,7 +26,10 @@ MicrofacetEvent microfacet_event(const Vec3& wo, const Vec3& wi, float eta) {
     MicrofacetEvent event;
     const float cos_theta_o = wo.z;
     const float cos_theta_i = wi.z;
-    if (cos_theta_o == 0.0f || cos_theta_i == 0.0f) return event;
+    // Also when the product underflows (both cosines below about 1e-19): the sign test below would
+    // take a reflection for a refraction, and eval divide 0 by 0 (tests/stability, "every BSDF
+    // gives finite, non-negative values at grazing angles"). Such pairs scatter nothing.
+    if (cos_theta_o * cos_theta_i == 0.0f) return event;
     event.reflection = cos_theta_o * cos_theta_i > 0.0f;
     event.eta_crossed = event.reflection ? 1.0f : (cos_theta_o > 0.0f ? eta : 1.0f / eta);
     Vec3 wm = wo + event.eta_crossed * wi;

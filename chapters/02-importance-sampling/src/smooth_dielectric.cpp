@@ -17,6 +17,19 @@ namespace freezeray::ch02 {
 // chapter 04, which traces light paths, adds the adjoint BSDF that leaves it out.
 std::optional<BSDFSample> SmoothDielectricBSDF::sample(const Vec3& wo, const Vec2& /*u*/, float u_lobe) const {
     if (wo.z == 0.0f) return std::nullopt;
+    if (eta_ == 1.0f) {
+        // Index-matched: there is no interface, light goes straight on with weight 1. The Fresnel
+        // equations would give R = 0 only up to rounding (so u_lobe = 0 could still reflect), and
+        // below cos theta = 2.4e-4, where 1 - cos^2 rounds to 1, they report total internal
+        // reflection (tests/stability, "an index-matched dielectric passes every direction
+        // straight through").
+        BSDFSample s;
+        s.wi = -wo;
+        s.f = Spectrum(1.0f / std::abs(wo.z));
+        s.pdf = 1.0f;
+        s.flags = BSDF_Transmission | BSDF_Specular;
+        return s;
+    }
     const float R = fresnel_dielectric(wo.z, eta_);  // 1 on total internal reflection
     const float T = 1.0f - R;
 
