@@ -93,7 +93,7 @@ TEST_CASE("an image is bit-identical with 1 and 2 threads", "[convergence][deter
 TEST_CASE("pt-naive's default maximum depth loses under 1% of the Cornell box's light", "[convergence][ch01]") {
     // The same seed at the default depth and at depth 100 follows the same paths for the first
     // segments, so the difference of the two means is what the deeper segments add: the
-    // truncation bias of the default (measured 0.08% in the book; the test allows 1%).
+    // truncation bias of the default (measured 0.10% in the book; the test allows 1%).
     testing::TestRender request;
     request.scene = testing::scene_path("cornell-box/scene.json");
     request.width = request.height = 32;
