@@ -48,13 +48,22 @@ bool starts_with(const Bytes& bytes, std::string_view prefix) {
                       [](char a, unsigned char b) { return static_cast<unsigned char>(a) == b; });
 }
 
+// Where the marker segments of a JPEG file begin, after its start-of-image marker; 0 when it
+// has none. stb_image, like the JPEG standard (ITU T.81, B.1.1.2), lets fill bytes 0xFF precede
+// a marker, so "FF FF D8" starts a JPEG file too.
+std::size_t jpeg_data_start(const Bytes& bytes) {
+    std::size_t i = 0;
+    while (i < bytes.size() && bytes[i] == 0xff) ++i;
+    return i > 0 && i < bytes.size() && bytes[i] == 0xd8 ? i + 1 : 0;
+}
+
 // The format stb_image will decode `bytes` as, by the signatures its loaders test for. GIF, PSD,
 // Softimage PIC and PNM, which stb_image also reads, are "unsupported": they are not among
 // the formats the renderer documents, and a truncated one would decode as black.
 Format format_of(const Bytes& bytes) {
     using namespace std::string_view_literals;
     if (starts_with(bytes, "\x89PNG\r\n\x1a\n"sv)) return Format::png;
-    if (starts_with(bytes, "\xff\xd8"sv)) return Format::jpeg;
+    if (jpeg_data_start(bytes) > 0) return Format::jpeg;
     if (starts_with(bytes, "BM"sv)) return Format::bmp;
     if (starts_with(bytes, "GIF8"sv) || starts_with(bytes, "8BPS"sv) || starts_with(bytes, "\x53\x80\xf6\x34"sv) ||
         starts_with(bytes, "P5"sv) || starts_with(bytes, "P6"sv))
@@ -75,7 +84,7 @@ std::uint32_t little_endian(const Bytes& bytes, std::size_t at, int size) {
 // itself) and refuses a DHT segment with such a table. Entropy-coded data after a scan is
 // skipped up to the next marker (0xFF followed by neither 0 nor a restart code).
 void check_jpeg_huffman_tables(const Bytes& bytes, const std::string& path) {
-    std::size_t position = 2;  // after the start-of-image marker
+    std::size_t position = jpeg_data_start(bytes);
     while (position + 4 <= bytes.size()) {
         if (bytes[position] != 0xff) {  // entropy-coded data
             ++position;
@@ -116,13 +125,24 @@ void check_complete(const Bytes& bytes, Format format, const std::string& path) 
         throw InputError(path, std::string("the ") + name + " file is truncated (" + detail + ")");
     };
     if (format == Format::png) {
-        const unsigned char end_chunk[4] = {'I', 'E', 'N', 'D'};
-        const auto found = std::find_end(bytes.begin(), bytes.end(), end_chunk, end_chunk + 4);
-        if (found == bytes.end() || bytes.end() - found < 8)  // the chunk type, then its 4-byte CRC
-            truncated("PNG", "its final IEND chunk is missing");
+        // Chunks: a 4-byte big-endian length, the type, the data, a CRC; the last is IEND. stb_image
+        // grows its buffer to an IDAT chunk's stated length before reading it, so a length past
+        // the end of the file must be refused first (found by fuzz_image: a 2 GB allocation).
+        std::size_t position = 8;
+        for (;;) {
+            if (bytes.size() - position < 12) truncated("PNG", "its final IEND chunk is missing");
+            std::uint32_t length = 0;
+            for (int i = 0; i < 4; ++i) length = (length << 8) | bytes[position + static_cast<std::size_t>(i)];
+            if (length > bytes.size() - position - 12) truncated("PNG", "a chunk runs past the end of the file");
+            if (std::equal(bytes.begin() + static_cast<std::ptrdiff_t>(position) + 4,
+                           bytes.begin() + static_cast<std::ptrdiff_t>(position) + 8, "IEND"))
+                break;
+            position += 12 + length;
+        }
     } else if (format == Format::jpeg) {
         const unsigned char end_marker[2] = {0xff, 0xd9};
-        if (std::find_end(bytes.begin() + 2, bytes.end(), end_marker, end_marker + 2) == bytes.end())
+        if (std::find_end(bytes.begin() + static_cast<std::ptrdiff_t>(jpeg_data_start(bytes)), bytes.end(), end_marker,
+                          end_marker + 2) == bytes.end())
             truncated("JPEG", "its end-of-image marker is missing");
         check_jpeg_huffman_tables(bytes, path);
     } else if (format == Format::bmp) {

@@ -80,12 +80,10 @@ std::vector<MtlBlock> scan_mtl_blocks(std::string_view text, const std::string& 
     std::vector<std::string_view> words;
     std::size_t line_number = 0;
     for (std::size_t start = 0; start < text.size();) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string_view::npos) end = text.size();
-        const std::string_view line = text.substr(start, end - start);
-        start = end + 1;
+        const std::string_view line = next_line(text, start);
         ++line_number;
 
+        refuse_huge_exponents(line, path, line_number);
         split_words(line, words);
         if (words.empty()) continue;
         const std::string where = path + ":" + std::to_string(line_number);

@@ -160,6 +160,32 @@ bool read_text_file(const std::string& path, std::string& text) {
     return static_cast<bool>(file);
 }
 
+std::string_view next_line(std::string_view text, std::size_t& start) {
+    std::size_t end = text.find_first_of("\r\n", start);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(start, end - start);
+    start = end + (text.substr(end, 2) == "\r\n" ? 2 : 1);
+    return line.substr(0, line.find('\0'));
+}
+
+void refuse_huge_exponents(std::string_view line, const std::string& path, std::size_t line_number) {
+    for (std::size_t i = 1; i + 1 < line.size(); ++i) {
+        const char before = line[i - 1];
+        if ((line[i] != 'e' && line[i] != 'E') || !((before >= '0' && before <= '9') || before == '.')) continue;
+        std::size_t digit = i + 1;
+        if (line[digit] == '+' || line[digit] == '-') ++digit;
+        while (digit < line.size() && line[digit] == '0') ++digit;  // leading zeros do not count
+        std::size_t end = digit;
+        while (end < line.size() && line[end] >= '0' && line[end] <= '9') ++end;
+        if (end - digit > 6) {
+            const std::size_t start = line.find_last_of(" \t", i) == std::string_view::npos ? 0 : line.find_last_of(" \t", i) + 1;
+            throw InputError(path + ":" + std::to_string(line_number),
+                             "'" + std::string(line.substr(start, line.find_first_of(" \t", i) - start)) +
+                                 "' has an exponent too large to read");
+        }
+    }
+}
+
 // Splits one line into words separated by spaces or tabs; a word starting with '#' begins a
 // comment, which ends the line.
 void split_words(std::string_view line, std::vector<std::string_view>& words) {
@@ -193,13 +219,11 @@ ObjTextSummary check_obj_text(std::string_view text, const std::string& path) {
     std::vector<std::string_view> words;
     std::size_t line_number = 0;
     for (std::size_t start = 0; start < text.size();) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string_view::npos) end = text.size();
-        const std::string_view text_line = text.substr(start, end - start);
-        start = end + 1;
+        const std::string_view text_line = next_line(text, start);
         ++line_number;
         const LineRef line{path, line_number};
 
+        refuse_huge_exponents(text_line, path, line_number);
         split_words(text_line, words);
         if (words.empty()) continue;
         const std::string_view keyword = words[0];

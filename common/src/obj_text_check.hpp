@@ -39,6 +39,17 @@ struct ObjTextSummary {
 // Reads a whole file into `text` (appending to what it holds); false when it cannot be read.
 bool read_text_file(const std::string& path, std::string& text);
 
+// The next line of an OBJ or MTL text from `start`, as tinyobjloader reads lines: ended by
+// "\n", "\r\n" or a lone "\r", and cut at its first NUL byte (tinyobjloader reads a line as a C
+// string). Moves `start` past the line's end. Reading the lines alike matters: a line this pass
+// took for a vertex but tinyobjloader did not would let a face index point past its vertices.
+std::string_view next_line(std::string_view text, std::size_t& start);
+
+// Throws InputError at `where` when a word of the line (comments included) is a number whose
+// exponent has more than 6 digits, such as 1e-21474836491: tinyobjloader's number reader
+// overflows an int on those (found by fuzz_obj), wherever it meets one, in any statement.
+void refuse_huge_exponents(std::string_view line, const std::string& path, std::size_t line_number);
+
 // Splits one line into words separated by spaces or tabs; a word starting with '#' begins a
 // comment, which ends the line.
 void split_words(std::string_view line, std::vector<std::string_view>& words);

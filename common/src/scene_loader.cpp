@@ -31,27 +31,40 @@ nlohmann::json parse_json_file(const std::string& path) {
         if (!std::filesystem::exists(path, error)) throw InputError(path, "scene file does not exist");
         throw InputError(path, "scene file cannot be read");
     }
-    std::stringstream text;
-    text << in.rdbuf();
-    try {
-        return nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-        // Turn the byte offset of the error into line:column.
-        const std::string s = text.str();
-        const std::size_t offset = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, s.size());
+    std::stringstream text_stream;
+    text_stream << in.rdbuf();
+    const std::string text = text_stream.str();
+    // "path:line:column" of a byte offset, for messages.
+    auto where = [&](std::size_t offset) {
+        offset = std::min(offset, text.size());
         std::size_t line = 1, column = 1;
         for (std::size_t i = 0; i < offset; ++i) {
-            if (s[i] == '\n') {
+            if (text[i] == '\n') {
                 ++line;
                 column = 1;
             } else {
                 ++column;
             }
         }
+        return path + ":" + std::to_string(line) + ":" + std::to_string(column);
+    };
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
         std::string reason = e.what();
         const std::size_t colon = reason.find("syntax error");
         if (colon != std::string::npos) reason = reason.substr(colon);
-        throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(column), "malformed JSON: " + reason);
+        throw InputError(where(e.byte > 0 ? e.byte - 1 : 0), "malformed JSON: " + reason);
+    } catch (const nlohmann::json::exception& e) {
+        // A number too large for a double ("1e400") is an out_of_range error without a position
+        // (found by fuzz_scene_json); its message quotes the number, so look for it in the text.
+        const std::string reason = e.what();
+        const std::size_t first = reason.find('\''), last = reason.rfind('\'');
+        const std::string token = first < last ? reason.substr(first + 1, last - first - 1) : std::string();
+        const std::size_t offset = token.empty() ? std::string::npos : text.find(token);
+        throw InputError(offset == std::string::npos ? path : where(offset),
+                         token.empty() ? "malformed JSON: " + reason
+                                       : "malformed JSON: the number " + token + " is too large");
     }
 }
 

@@ -138,8 +138,10 @@ TEST_CASE("malformed Radiance HDR files throw InputError with the reason", "[uni
         {"#?RADIANCE\n\n-Y 20000 +X 20000\n", {1, 1, 1, 128}, "too large"},
         {"#?RADIANCE\n\n-Y one +X 1\n", {1, 1, 1, 128}, "'one'"},
         {"#?RADIANCE\n\n-Y 1 +X 2\n", {1, 1, 1, 128}, "truncated"},                   // 2 pixels, 1 present
-        {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 0}, "run-length count"},           // a count of zero
-        {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 128 + 9, 1}, "run-length count"},  // 9 > 8 pixels
+        // (The zeros after a broken count make the file long enough for an 8-pixel scanline, which
+        // is checked before anything is decoded.)
+        {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 0, 0, 0, 0, 0, 0, 0, 0}, "run-length count"},     // a count of zero
+        {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 128 + 9, 1, 0, 0, 0, 0, 0, 0}, "run-length count"},  // 9 > 8 pixels
         {"#?RADIANCE\n\n-Y 1 +X 8\n", {2, 2, 0, 8, 128 + 8}, "truncated"},            // no run value
     };
     for (const Case& bad : cases) {

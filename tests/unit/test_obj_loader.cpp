@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <random>
 #include <string>
 
 #ifndef FREEZERAY_SOURCE_DIR
@@ -309,4 +311,34 @@ TEST_CASE("the shared Cornell box loads with its 36 triangles", "[unit][obj]") {
     for (const TriangleMesh& mesh : result.meshes) triangles += mesh.triangle_count();
     CHECK(triangles == 36);
     CHECK(result.dropped_degenerate_triangles == 0);
+}
+
+// Found by fuzz_obj: the first pass must read lines and numbers as tinyobjloader does, or a face
+// index it accepted could point past tinyobjloader's vertices.
+TEST_CASE("OBJ and MTL lines end at a lone carriage return and huge exponents are refused", "[unit][obj]") {
+    const std::string folder = (std::filesystem::temp_directory_path() /
+                                ("freezeray-obj-lines-" + std::to_string(std::random_device()()))).string();
+    std::filesystem::create_directories(folder);
+    const auto load_text = [&](const std::string& name, const std::string& text) {
+        std::ofstream(folder + "/" + name, std::ios::binary) << text;
+        try {
+            load_obj(folder + "/" + name);
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("(loaded)");
+    };
+    // "v\r 0 1 0" is two lines for tinyobjloader, "v" and " 0 1 0": no third vertex.
+    CHECK_THAT(load_text("cr.obj", "v 0 0 0\nv 1 0 0\nv\r 0 1 0\nf 1 2 3\n"), Contains("cr.obj:3"));
+    // Old Mac line endings alone are fine.
+    CHECK(load_text("mac.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r") == "(loaded)");
+    // Text after a NUL byte is not part of the line for tinyobjloader.
+    CHECK_THAT(load_text("nul.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\0 4\n", 35) + "f 1 2 4\n"),
+               Contains("nul.obj:5") && Contains("out of range"));
+    CHECK_THAT(load_text("exponent.obj", "v 0 0 1e-21474836491\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+               Contains("exponent.obj:1") && Contains("exponent too large"));
+    std::ofstream(folder + "/exponent.mtl") << "Ka 1e2147483649 0 0\nnewmtl m\nKd 1 1 1\n";
+    CHECK_THAT(load_text("uses-mtl.obj", "mtllib exponent.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n"),
+               Contains("exponent.mtl:1"));
+    std::filesystem::remove_all(folder);
 }

@@ -173,6 +173,10 @@ TEST_CASE("a wrong JSON type at any level names its path", "[unit][scene]") {
 TEST_CASE("numbers beyond single precision and impossible frames are refused with their path", "[unit][scene]") {
     TemporaryFolder folder;
     const std::string mesh = R"(, "meshes": [{"file": "tri.obj"}]})";
+    SECTION("a number beyond double precision is malformed JSON at its line and column") {
+        const std::string path = make_scene(folder, "{\n  \"camera\": {\"position\": [0, 0, 1e400]," + mesh);
+        CHECK_THAT(load_error(path), Catch::Contains("scene.json:2:33") && Catch::Contains("1e400"));
+    }
     SECTION("a camera whose view direction overflows") {
         const std::string path = make_scene(folder, R"({"camera": {"position": [3e38, 0, 0], "look_at": [-3e38, 0, 0], "fov_vertical_degrees": 40})" + mesh);
         CHECK_THAT(load_error(path), Catch::Contains("/camera/look_at"));
