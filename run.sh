@@ -31,13 +31,15 @@ fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >&2
-cmake --build build --parallel "$jobs" >&2
 
 if [ "$command" = render ]; then
+    # Only what the render needs: the common library and chapter 01's renderer.
+    cmake --build build --parallel "$jobs" --target ch01 >&2
     mkdir -p out
     # Prints the path of the image it wrote.
     build/chapters/ch01 render scenes/cornell-box/scene.json --out out/cornell-box.png
 else
+    cmake --build build --parallel "$jobs" >&2
     # Everything but the benchmarks (label `bench`).
     ctest --test-dir build --output-on-failure --parallel "$jobs" --label-exclude bench
 fi
