@@ -24,6 +24,8 @@ if(FREEZERAY_FUZZ)
   if(NOT FREEZERAY_SANITIZE)
     set(FREEZERAY_SANITIZE "address,undefined" CACHE STRING
         "Build everything with sanitizers: empty (none), address,undefined, or thread" FORCE)
+  elseif(FREEZERAY_SANITIZE MATCHES "thread")
+    message(FATAL_ERROR "FREEZERAY_FUZZ works with address and undefined, not with thread")
   endif()
 endif()
 
