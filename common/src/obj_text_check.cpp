@@ -48,6 +48,21 @@ bool check_coordinates(const std::vector<std::string_view>& words, std::size_t l
     return finite;
 }
 
+// Checks a `vw` line (vertex weights, a tinyobjloader extension the renderer ignores):
+// tinyobjloader converts its joint ids to int without a check (found by fuzz_obj: an infinite
+// one), so every value must be a number within the range of an int.
+void check_vertex_weights(const std::vector<std::string_view>& words, const LineRef& line) {
+    for (std::size_t i = 1; i < words.size(); ++i) {
+        std::string_view word = words[i];
+        if (word.size() > 1 && word[0] == '+' && word[1] != '-') word.remove_prefix(1);
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+        if (error != std::errc() || end != word.data() + word.size() || !(std::abs(value) <= 2147483647.0))
+            throw InputError(line.where(), "'" + std::string(words[i]) +
+                                               "' on a 'vw' line is not a number within the range of an int");
+    }
+}
+
 // How many vertices, texture coordinates and normals the file has defined up to a line.
 struct DefinedCounts {
     std::size_t positions = 0;
@@ -237,6 +252,8 @@ ObjTextSummary check_obj_text(std::string_view text, const std::string& path) {
         } else if (keyword == "vn") {
             check_coordinates(words, 3, 3, "x y z", line);
             ++defined.normals;
+        } else if (keyword == "vw") {
+            check_vertex_weights(words, line);
         } else if (keyword == "f") {
             check_face(words, defined, line);
             ++summary.face_count;

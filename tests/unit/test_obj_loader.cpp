@@ -337,6 +337,10 @@ TEST_CASE("OBJ and MTL lines end at a lone carriage return and huge exponents ar
                Contains("nul.obj:5") && Contains("out of range"));
     CHECK_THAT(load_text("exponent.obj", "v 0 0 1e-21474836491\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
                Contains("exponent.obj:1") && Contains("exponent too large"));
+    // Vertex weights (a tinyobjloader extension): their joint ids become ints.
+    CHECK(load_text("weights.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 0 0.25 1 0.75\nf 1 2 3\n") == "(loaded)");
+    CHECK_THAT(load_text("bad-weights.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvw 0 1e999 1\nf 1 2 3\n"),
+               Contains("bad-weights.obj:4") && Contains("'vw'"));
     std::ofstream(folder + "/exponent.mtl") << "Ka 1e2147483649 0 0\nnewmtl m\nKd 1 1 1\n";
     CHECK_THAT(load_text("uses-mtl.obj", "mtllib exponent.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n"),
                Contains("exponent.mtl:1"));
