@@ -45,7 +45,8 @@ std::uint64_t next_pass_size(std::uint64_t done, std::uint64_t sample_cap, std::
 }  // namespace
 
 // BOOK(pixel-loop)
-RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
+RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, Progress& progress,
+                           const RadianceEstimator& li) {
     const PinholeCamera& camera = *scene.camera;
     const int width = camera.width();
     const int height = camera.height();
@@ -83,7 +84,7 @@ RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& s
                         PCG32 random = make_pixel_stream(settings.seed, pixel_index, settings.first_sample + s);
                         const Vec2 film_position(x + random.next_float(), y + random.next_float());
                         arena.reset();
-                        film.add_sample(x, y, li(camera.generate_ray(film_position), scene, random, arena));
+                        film.add_sample(x, y, li(camera.generate_ray(film_position), random, arena));
                     }
                 }
             }
@@ -118,5 +119,11 @@ RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& s
     return result;
 }
 // END BOOK
+
+RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
+    return render_pixels(scene, settings, progress, [&](const Ray& ray, PCG32& random, ScratchArena& arena) {
+        return li(ray, scene, random, arena);
+    });
+}
 
 }  // namespace freezeray

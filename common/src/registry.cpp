@@ -43,7 +43,10 @@ int chapter_introducing(CapabilityKind kind, const std::string& name) {
         {CapabilityKind::Material, "mix", 2},
         {CapabilityKind::TextureLayout, "linear", 2},
         {CapabilityKind::Integrator, "pt-nee", 3},
+        {CapabilityKind::Integrator, "pt-nee-uniform", 3},
         {CapabilityKind::Integrator, "pt-mis", 3},
+        {CapabilityKind::Integrator, "pt-mis-balance", 3},
+        {CapabilityKind::Integrator, "pt-mis-uniform", 3},
         {CapabilityKind::Light, "area", 3},
         {CapabilityKind::Light, "point", 3},
         {CapabilityKind::Light, "spot", 3},
@@ -113,11 +116,19 @@ void Registry::add_accelerator(const std::string& name, int chapter, const std::
     accelerators_[name] = {Entry{name, chapter, summary}, std::move(f)};
 }
 
+void Registry::add_light(const std::string& name, int chapter, const std::string& summary, LightFactory f) {
+    lights_[name] = {Entry{name, chapter, summary}, std::move(f)};
+}
+void Registry::add_area_light(int chapter, const std::string& summary, AreaLightFactory f) {
+    area_light_ = {Entry{"area", chapter, summary}, std::move(f)};
+}
+
 bool Registry::has(CapabilityKind kind, const std::string& name) const {
     switch (kind) {
         case CapabilityKind::Integrator: return integrators_.count(name) > 0;
         case CapabilityKind::Material: return materials_.count(name) > 0;
         case CapabilityKind::Accelerator: return accelerators_.count(name) > 0;
+        case CapabilityKind::Light: return lights_.count(name) > 0 || (name == "area" && area_light_.has_value());
         default: return false;
     }
 }
@@ -130,6 +141,11 @@ std::vector<Registry::Entry> Registry::list(CapabilityKind kind) const {
     if (kind == CapabilityKind::Integrator) collect(integrators_);
     if (kind == CapabilityKind::Material) collect(materials_);
     if (kind == CapabilityKind::Accelerator) collect(accelerators_);
+    if (kind == CapabilityKind::Light) {
+        collect(lights_);
+        if (area_light_) entries.push_back(area_light_->first);
+        std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.name < b.name; });
+    }
     return entries;
 }
 
@@ -168,6 +184,18 @@ std::unique_ptr<Accelerator> Registry::make_accelerator(const std::string& name,
     const auto it = accelerators_.find(name);
     if (it == accelerators_.end()) unknown(CapabilityKind::Accelerator, name, where);
     return it->second.second();
+}
+
+std::unique_ptr<Light> Registry::make_light(const std::string& type, const Parameters& parameters) const {
+    const auto it = lights_.find(type);
+    if (it == lights_.end()) unknown(CapabilityKind::Light, type, parameters.where("type"));
+    return it->second.second(parameters);
+}
+
+std::unique_ptr<Light> Registry::make_area_light(const TriangleMesh& mesh, std::uint32_t triangle,
+                                                 const Spectrum& emission) const {
+    if (!area_light_) return nullptr;
+    return area_light_->second(mesh, triangle, emission);
 }
 
 }  // namespace freezeray

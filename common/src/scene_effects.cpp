@@ -11,6 +11,10 @@ namespace freezeray {
 SceneEffects compute_scene_effects(const Scene& scene) {
     SceneEffects effects;
     effects.area_emitters = !scene.emissive_triangles.empty();
+    for (const auto& light : scene.lights) {
+        effects.delta_lights |= is_delta_light(light->type());
+        effects.environment |= light->type() == LightType::Infinite;
+    }
     std::set<std::uint32_t> used;  // only materials some triangle uses count
     for (const TriangleMesh& mesh : scene.meshes) used.insert(mesh.face_materials.begin(), mesh.face_materials.end());
     for (std::uint32_t index : used) {
@@ -44,8 +48,8 @@ std::string SceneEffects::suggested_integrator(int chapter) const {
     if (chapter >= 4 && (specular || transmission) && (area_emitters || delta_lights))
         return "bdpt (caustics through specular surfaces are found from the light side)";
     if (chapter >= 3) return "pt-mis (light and BSDF sampling combined)";
+    if (delta_lights) return "none before chapter 03: point, spot and directional lights are found only by light sampling";
     if (chapter >= 2) return "pt-is (BSDF importance sampling)";
-    if (delta_lights) return "none in this chapter: delta lights are found only by light sampling (chapter 03)";
     if (specular) return "pt-naive renders specular surfaces black; importance sampling comes in chapter 02";
     return "pt-naive (the only integrator of chapter 01)";
 }

@@ -157,6 +157,31 @@ std::unique_ptr<Material> build_material(const std::string& name, const nlohmann
     return material;
 }
 
+// The scene's "lights" array: analytic lights and the environment, made by the registry (chapter
+// 03 registers them). At most one light may be at infinity.
+void read_lights(const Parameters& top, const nlohmann::json& root, Scene& scene, const Registry& registry) {
+    if (!top.has("lights")) return;
+    const nlohmann::json& lights = root.at("lights");
+    if (!lights.is_array()) throw InputError(top.where("lights"), "expected an array of lights");
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Parameters p(lights[i], top.file(), "/lights/" + std::to_string(i), top.base_directory());
+        const std::string type = p.require_string("type");
+        if (type == "area")
+            throw InputError(p.where("type"), "area lights come from emissive materials (\"emission\" or MTL Ke), "
+                                              "not from the \"lights\" array");
+        std::unique_ptr<Light> light = registry.make_light(type, p);
+        light->where = p.where();
+        for (std::string& w : p.unused_key_warnings()) scene.warnings.push_back(std::move(w));
+        if (light->type() == LightType::Infinite) {
+            if (scene.environment != nullptr)
+                throw InputError(p.where("type"), "a scene has at most one environment (" + scene.environment->where +
+                                                      " is the first)");
+            scene.environment = light.get();
+        }
+        scene.lights.push_back(std::move(light));
+    }
+}
+
 }  // namespace
 
 std::size_t Scene::triangle_count() const {
@@ -266,11 +291,26 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     }
     for (std::string& w : top.unused_key_warnings()) scene.warnings.push_back(std::move(w));
 
+    scene.triangle_lights.resize(scene.meshes.size());
     for (std::uint32_t mi = 0; mi < scene.meshes.size(); ++mi) {
         const TriangleMesh& mesh = scene.meshes[mi];
         scene.bounds.expand(mesh.bounds());
-        for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-            if (scene.materials[mesh.face_materials[t]]->is_emissive()) scene.emissive_triangles.push_back({mi, t});
+        for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+            const Material& material = *scene.materials[mesh.face_materials[t]];
+            if (!material.is_emissive()) continue;
+            scene.emissive_triangles.push_back({mi, t});
+            std::unique_ptr<Light> light = registry.make_area_light(mesh, t, material.emission);
+            if (!light) continue;
+            if (scene.triangle_lights[mi].empty()) scene.triangle_lights[mi].assign(mesh.triangles.size(), Scene::NoLight);
+            scene.triangle_lights[mi][t] = static_cast<std::uint32_t>(scene.lights.size());
+            light->where = "mesh '" + mesh.name + "', triangle " + std::to_string(t);
+            scene.lights.push_back(std::move(light));
+        }
+    }
+    read_lights(top, root, scene, registry);
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        scene.lights[i]->index = static_cast<std::uint32_t>(i);
+        scene.lights[i]->preprocess(scene.bounds);
     }
     scene.accelerator = registry.make_accelerator(options.accelerator, "--accel");
     scene.accelerator->build(scene.meshes);

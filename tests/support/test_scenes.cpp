@@ -3,6 +3,7 @@
 
 #include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/ch02/register_chapter02.hpp"
+#include "freezeray/ch03/register_chapter03.hpp"
 #include "freezeray/progress.hpp"
 
 #include <atomic>
@@ -32,9 +33,10 @@ std::optional<std::string> shared_scenes_folder() {
 
 const Registry& full_registry() {
     static const Registry registry = [] {
-        Registry r("freezeray", 2);
+        Registry r("freezeray", 3);
         register_chapter01(r);
         register_chapter02(r);
+        register_chapter03(r);
         return r;
     }();
     return registry;

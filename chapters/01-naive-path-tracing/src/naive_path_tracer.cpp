@@ -27,7 +27,10 @@ Spectrum NaivePathTracer::li(const Ray& camera_ray, const Scene& scene, PCG32& r
     Ray ray = camera_ray;
     for (int segments = 1; segments <= max_depth_; ++segments) {
         const std::optional<Hit> hit = scene.intersect(ray);
-        if (!hit) break;  // chapter 01 has no environment: the sky is black
+        if (!hit) {  // the ray leaves the scene: the sky (black unless the scene has an environment)
+            radiance += throughput * scene.environment_radiance(ray);
+            break;
+        }
         const Material& material = scene.material(*hit);
         const Vec3 wo_world = -ray.direction;
 

@@ -23,7 +23,10 @@ Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& sce
     Ray ray = camera_ray;
     for (int segments = 1; segments <= max_depth_; ++segments) {
         const std::optional<Hit> hit = scene.intersect(ray);
-        if (!hit) break;  // no environment before chapter 03
+        if (!hit) {
+            radiance += throughput * scene.environment_radiance(ray);
+            break;
+        }
         const Material& material = scene.material(*hit);
         const Vec3 wo_world = -ray.direction;
         radiance += throughput * emitted_radiance(material, *hit, wo_world);

@@ -60,8 +60,19 @@ public:
     virtual RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const = 0;
 };
 
+// One sample of the radiance arriving along a camera ray. All randomness from `random`; scratch
+// allocations in `arena`, which is reset before every call.
+using RadianceEstimator = std::function<Spectrum(const Ray& ray, PCG32& random, ScratchArena& arena)>;
+
+// The image loop shared by every per-pixel integrator: passes of samples over all tiles until the
+// sample count, the time budget or the target error is reached; each sample from its own stream.
+RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, Progress& progress,
+                           const RadianceEstimator& li);
+
 // An integrator that estimates each pixel independently from camera paths: it only says how one
 // camera ray's radiance is estimated (li); the image loop, the film and the passes are shared.
+// (An integrator that needs per-scene data, such as chapter 03's light sampler, derives from
+// Integrator and calls render_pixels itself.)
 class PixelIntegrator : public Integrator {
 public:
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;

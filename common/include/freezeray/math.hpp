@@ -12,6 +12,7 @@ namespace freezeray {
 using Vec2 = glm::vec2;
 using Vec3 = glm::vec3;
 using Point2i = glm::ivec2;
+using Mat3 = glm::mat3;
 using Mat4 = glm::mat4;
 
 // Linear, scene-referred RGB radiance (or reflectance). Converted to sRGB only when a PNG is written.
@@ -21,6 +22,7 @@ inline constexpr float Pi = std::numbers::pi_v<float>;
 inline constexpr float InvPi = std::numbers::inv_pi_v<float>;
 inline constexpr float Inv2Pi = 0.5f * std::numbers::inv_pi_v<float>;
 inline constexpr float Inv4Pi = 0.25f * std::numbers::inv_pi_v<float>;
+inline constexpr float OneMinusEpsilon = 0x1.fffffep-1f;  // the largest float below 1
 
 // Relative luminance of linear Rec.709 RGB (ITU-R BT.709 weights).
 inline float luminance(const Spectrum& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }

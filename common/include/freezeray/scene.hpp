@@ -4,6 +4,7 @@
 
 #include "freezeray/accelerator.hpp"
 #include "freezeray/camera.hpp"
+#include "freezeray/light.hpp"
 #include "freezeray/material.hpp"
 #include "freezeray/mesh.hpp"
 #include "freezeray/scene_effects.hpp"
@@ -38,6 +39,10 @@ public:
     std::vector<TriangleMesh> meshes;           // world space
     std::vector<std::unique_ptr<Material>> materials;
     std::vector<EmissiveTriangle> emissive_triangles;
+    // Every light: one area light per emissive triangle (when a chapter registered area lights),
+    // then the "lights" of the scene file in their order. Light::index is the position here.
+    std::vector<std::unique_ptr<Light>> lights;
+    const Light* environment = nullptr;         // the infinite light, if any (at most one)
     CameraDescription camera_description;
     std::optional<PinholeCamera> camera;
     std::unique_ptr<Accelerator> accelerator;
@@ -50,7 +55,25 @@ public:
     bool occluded(const Ray& ray) const { return accelerator->occluded(ray); }
     const Material& material(const Hit& hit) const { return *materials[hit.material]; }
 
+    // Radiance arriving along a ray that leaves the scene: the environment's, or black.
+    Spectrum environment_radiance(const Ray& ray) const {
+        return environment != nullptr ? environment->le(ray.direction) : Spectrum(0.0f);
+    }
+
+    // The area light of the emissive triangle a ray hit; null when the triangle does not emit
+    // or area lights are not registered.
+    const Light* area_light(const Hit& hit) const {
+        if (hit.mesh >= triangle_lights.size() || triangle_lights[hit.mesh].empty()) return nullptr;
+        const std::uint32_t index = triangle_lights[hit.mesh][hit.triangle];
+        return index == NoLight ? nullptr : lights[index].get();
+    }
+
     std::size_t triangle_count() const;
+
+    // Per mesh, per triangle: the index of its area light in `lights`, or NoLight. A mesh without
+    // emitters has an empty vector.
+    static constexpr std::uint32_t NoLight = 0xffffffffu;
+    std::vector<std::vector<std::uint32_t>> triangle_lights;
 };
 
 struct SceneLoadOptions {

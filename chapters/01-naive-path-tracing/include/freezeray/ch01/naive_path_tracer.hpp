@@ -1,6 +1,7 @@
 // Chapter 01: naive path tracing. The rendering equation estimated by following one random
 // path per sample, choosing every bounce direction uniformly over the hemisphere and counting
-// light only when the path happens to hit an emitter.
+// light only when the path happens to hit an emitter or leaves into the environment. Point, spot
+// and directional lights (chapter 03) cannot be hit, so this integrator renders them black.
 #pragma once
 
 #include "freezeray/integrator.hpp"

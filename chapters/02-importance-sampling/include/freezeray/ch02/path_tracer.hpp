@@ -1,4 +1,6 @@
-// Chapter 02: path tracing with BSDF importance sampling and Russian roulette (`pt-is`).
+// Chapter 02: path tracing with BSDF importance sampling and Russian roulette (`pt-is`). Like
+// chapter 01 it finds light only by hitting it: emitters and the environment, never point, spot or
+// directional lights, which it renders black (chapter 03 samples them).
 #pragma once
 
 #include "freezeray/integrator.hpp"

@@ -1,0 +1,124 @@
+// Path tracing with next-event estimation and multiple importance sampling (book chapter 03;
+// Veach 1997, section 9.2; pbrt-v3, section 14.5).
+#include "freezeray/ch03/light_sampling_path_tracer.hpp"
+
+#include "freezeray/ch02/path_tracer.hpp"
+
+namespace freezeray::ch03 {
+
+namespace {
+
+// The state of the bounce that led to the current vertex, which decides how the emission found
+// there is weighted.
+struct PreviousBounce {
+    bool specular = true;   // a delta lobe (or the camera): light sampling could not have found this emission
+    float bsdf_pdf = 0.0f;  // solid-angle density of the sampled direction
+    Vec3 position{0.0f};    // where the bounce happened
+};
+
+}  // namespace
+
+LightSamplingPathTracer::LightSamplingPathTracer(const LightSamplingSettings& settings) : settings_(settings) {
+    if (settings_.max_depth <= 0) settings_.max_depth = ch02::DefaultMaxDepth;
+}
+
+RenderResult LightSamplingPathTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
+    const LightSampler lights(scene.lights, settings_.selection);
+    return render_pixels(scene, settings, progress, [&](const Ray& ray, PCG32& random, ScratchArena& arena) {
+        return li(ray, scene, lights, random, arena);
+    });
+}
+
+// BOOK(sample-one-light)
+// The light arriving at `hit` from one light chosen by the light sampler, reflected towards wo:
+// f Li |cos theta_i| / (P(light) p(wi)), weighted against BSDF sampling when combining by MIS.
+static Spectrum sample_one_light(const Hit& hit, const Frame& frame, const Vec3& wo, const BSDF& bsdf,
+                                 const Scene& scene, const LightSampler& lights, const LightSamplingSettings& settings,
+                                 PCG32& random) {
+    const float u_select = random.next_float();
+    const Vec2 u_light(random.next_float(), random.next_float());
+    const std::optional<LightSampler::Choice> choice = lights.sample(u_select);
+    if (!choice) return Spectrum(0.0f);
+    const std::optional<LightSample> sample = choice->light->sample_li(hit.position, u_light);
+    if (!sample || sample->pdf <= 0.0f || is_black(sample->radiance)) return Spectrum(0.0f);
+
+    const Vec3 wi = frame.to_local(sample->wi);
+    const Spectrum f = bsdf.eval(wo, wi) * abs_cos_theta(wi);
+    if (is_black(f)) return Spectrum(0.0f);
+    const Ray shadow_ray = sample->infinite ? hit.spawn_ray(sample->wi) : hit.spawn_ray_to(sample->position);
+    if (scene.occluded(shadow_ray)) return Spectrum(0.0f);
+
+    const float light_pdf = choice->probability * sample->pdf;
+    float weight = 1.0f;
+    if (settings.combination == Combination::MultipleImportanceSampling && !is_delta_light(choice->light->type()))
+        weight = mis_weight(settings.heuristic, light_pdf, bsdf.pdf(wo, wi));
+    return f * sample->radiance * (weight / light_pdf);
+}
+// END BOOK
+
+// BOOK(emission-weight)
+// The weight of emission Le found by following the BSDF sample of `previous` into `light`
+// along direction wi: 1 where light sampling could not have produced the same path, 0 for
+// next-event estimation (light sampling counted it), the MIS weight otherwise.
+static float emission_weight(const PreviousBounce& previous, const Light* light, const Vec3& wi,
+                             const LightSampler& lights, const LightSamplingSettings& settings) {
+    if (previous.specular || light == nullptr) return 1.0f;
+    if (settings.combination == Combination::NextEventEstimation) return 0.0f;
+    const float light_pdf = lights.probability(*light) * light->pdf_li(previous.position, wi);
+    return mis_weight(settings.heuristic, previous.bsdf_pdf, light_pdf);
+}
+// END BOOK
+
+// BOOK(pt-mis-li)
+Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, const LightSampler& lights,
+                                     PCG32& random, ScratchArena& arena) const {
+    Spectrum radiance(0.0f);
+    Spectrum throughput(1.0f);
+    Ray ray = camera_ray;
+    PreviousBounce previous;  // the camera: what it sees directly is never light-sampled
+    for (int segments = 1; segments <= settings_.max_depth; ++segments) {
+        const std::optional<Hit> hit = scene.intersect(ray);
+        if (!hit) {
+            if (scene.environment != nullptr)
+                radiance += throughput * scene.environment->le(ray.direction) *
+                            emission_weight(previous, scene.environment, ray.direction, lights, settings_);
+            break;
+        }
+        const Material& material = scene.material(*hit);
+        const Vec3 wo_world = -ray.direction;
+        const Spectrum emitted = emitted_radiance(material, *hit, wo_world);
+        if (!is_black(emitted))
+            radiance += throughput * emitted *
+                        emission_weight(previous, scene.area_light(*hit), ray.direction, lights, settings_);
+        if (segments == settings_.max_depth) break;
+
+        const BSDF& bsdf = *material.bsdf(*hit, arena);
+        Vec3 normal = hit->shading_normal;  // two-sided reflectors face the viewer (as in chapter 02)
+        if (!has_flag(bsdf.flags(), BSDF_Transmission) && glm::dot(normal, wo_world) < 0.0f) normal = -normal;
+        const Frame frame(normal);
+        const Vec3 wo = frame.to_local(wo_world);
+
+        // Next-event estimation: a light sample at every vertex with a non-delta lobe.
+        if (bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy))
+            radiance += throughput * sample_one_light(*hit, frame, wo, bsdf, scene, lights, settings_, random);
+
+        // Continue the path by sampling the BSDF (chapter 02).
+        const Vec2 u(random.next_float(), random.next_float());
+        const std::optional<BSDFSample> sample = bsdf.sample(wo, u, random.next_float());
+        if (!sample || sample->pdf <= 0.0f) break;
+        throughput *= sample->weight();
+        if (is_black(throughput)) break;
+        previous = {has_flag(sample->flags, BSDF_Specular), sample->pdf, hit->position};
+
+        if (segments >= ch02::RussianRouletteStart) {
+            const float q = ch02::russian_roulette_continue_probability(throughput);
+            if (random.next_float() >= q) break;
+            throughput /= q;
+        }
+        ray = hit->spawn_ray(frame.to_world(sample->wi));
+    }
+    return radiance;
+}
+// END BOOK
+
+}  // namespace freezeray::ch03

@@ -1,0 +1,55 @@
+// Chapter 03's registrations.
+#include "freezeray/ch03/register_chapter03.hpp"
+
+#include "freezeray/ch03/area_light.hpp"
+#include "freezeray/ch03/directional_light.hpp"
+#include "freezeray/ch03/environment_light.hpp"
+#include "freezeray/ch03/light_sampling_path_tracer.hpp"
+#include "freezeray/ch03/point_light.hpp"
+#include "freezeray/ch03/spot_light.hpp"
+
+namespace freezeray {
+
+namespace {
+
+void add_path_tracer(Registry& registry, const std::string& name, const std::string& summary,
+                     ch03::LightSamplingSettings variant) {
+    registry.add_integrator(name, 3, summary, [variant](const RenderSettings& settings) {
+        ch03::LightSamplingSettings s = variant;
+        s.max_depth = settings.max_depth;
+        return std::make_unique<ch03::LightSamplingPathTracer>(s);
+    });
+}
+
+}  // namespace
+
+void register_chapter03(Registry& registry) {
+    registry.add_area_light(3, "every emissive triangle, sampled by area", [](const TriangleMesh& mesh, std::uint32_t triangle,
+                                                                              const Spectrum& emission) {
+        return std::make_unique<ch03::TriangleLight>(mesh, triangle, emission);
+    });
+    registry.add_light("point", 3, "point light: position, intensity", ch03::make_point_light);
+    registry.add_light("spot", 3, "spot light: position, look_at or direction, intensity, cone_angle_degrees, falloff_start_degrees",
+                       ch03::make_spot_light);
+    registry.add_light("directional", 3, "parallel light from one direction: direction (of travel), irradiance",
+                       ch03::make_directional_light);
+    registry.add_light("environment", 3, "equirectangular environment map: file, scale, rotate {axis, degrees}",
+                       ch03::make_environment_map_light);
+    registry.add_light("constant", 3, "constant environment: radiance", ch03::make_constant_environment_light);
+
+    using ch03::Combination;
+    using ch03::LightSelection;
+    using ch03::MisHeuristic;
+    add_path_tracer(registry, "pt-nee", "path tracing with next-event estimation (one light sample per vertex, lights chosen by power)",
+                    {Combination::NextEventEstimation, MisHeuristic::Power, LightSelection::Power, 0});
+    add_path_tracer(registry, "pt-nee-uniform", "pt-nee choosing lights uniformly instead of by power",
+                    {Combination::NextEventEstimation, MisHeuristic::Power, LightSelection::Uniform, 0});
+    add_path_tracer(registry, "pt-mis", "path tracing combining light and BSDF sampling by MIS (power heuristic)",
+                    {Combination::MultipleImportanceSampling, MisHeuristic::Power, LightSelection::Power, 0});
+    add_path_tracer(registry, "pt-mis-balance", "pt-mis with the balance heuristic",
+                    {Combination::MultipleImportanceSampling, MisHeuristic::Balance, LightSelection::Power, 0});
+    add_path_tracer(registry, "pt-mis-uniform", "pt-mis choosing lights uniformly instead of by power",
+                    {Combination::MultipleImportanceSampling, MisHeuristic::Power, LightSelection::Uniform, 0});
+}
+
+}  // namespace freezeray
