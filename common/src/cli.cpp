@@ -43,6 +43,12 @@ int run_info(const std::string& scene_path, const Registry& registry) {
             std::cout << ", emits (" << m->emission.r << ", " << m->emission.g << ", " << m->emission.b << ")";
         std::cout << "\n";
     }
+    std::size_t area_lights = 0;
+    for (const auto& light : scene.lights) area_lights += light->type() == LightType::Area ? 1 : 0;
+    std::cout << "lights:     " << scene.lights.size() << " (" << area_lights << " area, "
+              << scene.lights.size() - area_lights << " from the \"lights\" array";
+    if (scene.environment != nullptr) std::cout << ", one of them the environment";
+    std::cout << ")\n";
     std::cout << "effects:\n" << scene.effects.describe();
     std::cout << "suggested:  " << scene.effects.suggested_integrator(registry.chapter()) << "\n";
     return 0;

@@ -20,6 +20,15 @@ namespace freezeray {
 
 namespace {
 
+// The integrator for a render that names none: the one the scene's effects call for, if this
+// renderer has it, else the first registered.
+std::string default_integrator(const Scene& scene, const Registry& registry) {
+    const std::string suggestion = scene.effects.suggested_integrator(registry.chapter());
+    const std::string name = suggestion.substr(0, suggestion.find(' '));
+    if (registry.has(CapabilityKind::Integrator, name)) return name;
+    return registry.list(CapabilityKind::Integrator).front().name;
+}
+
 // Set by the first SIGINT or SIGTERM: the render stops after its current tiles and writes what
 // it has. A second signal ends the process at once (the conventional 128 + signal number).
 std::atomic<bool> stop_requested{false};
@@ -109,8 +118,12 @@ int run_render(const RenderOptions& options, const Registry& registry) {
 
     std::string integrator_name = options.integrator;
     if (integrator_name.empty()) integrator_name = scene.defaults.integrator;
-    if (integrator_name.empty()) integrator_name = registry.list(CapabilityKind::Integrator).front().name;
+    if (integrator_name.empty()) integrator_name = default_integrator(scene, registry);
     const auto integrator = registry.make_integrator(integrator_name, settings, "--integrator");
+    if (scene.effects.delta_lights && !integrator->samples_lights())
+        std::cerr << "warning: " << integrator_name
+                  << " finds light only by hitting it; the scene's point, spot and directional lights cannot be hit "
+                     "and stay black (pt-nee and pt-mis sample them)\n";
 
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after

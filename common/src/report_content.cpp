@@ -1,6 +1,8 @@
 // What a comparison report says, whatever its format (see report_content.hpp).
 #include "report_content.hpp"
 
+#include "freezeray/metrics.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -234,6 +236,34 @@ std::string short_scene_name(const std::string& path) {
     const std::string name = file.filename().string();
     if (name.empty()) return path;
     return folder.empty() || folder == "." || folder == ".." ? name : folder + "/" + name;
+}
+
+CropErrorTable crop_error_table(const Comparison& comparison, const CropRegion& region) {
+    CropErrorTable table;
+    if (!comparison.reference) return table;
+    auto crop = [&](const Image& image) {
+        Image part(region.width, region.height);
+        for (int y = 0; y < region.height; ++y)
+            for (int x = 0; x < region.width; ++x) part.at(x, y) = image.at(region.x + x, region.y + y);
+        return part;
+    };
+    const Image reference = crop(*comparison.reference);
+    std::vector<double> mse_values, relative_values;
+    for (const IntegratorRun& run : comparison.runs) {
+        const Image part = crop(run.result.image);
+        mse_values.push_back(mse(part, reference));
+        relative_values.push_back(relative_mse(part, reference));
+    }
+    auto cells = [&](const std::vector<double>& values) {
+        std::vector<Cell> row;
+        const auto best = std::min_element(values.begin(), values.end());
+        for (std::size_t i = 0; i < values.size(); ++i)
+            row.push_back({format_number(values[i]), values.size() > 1 && values[i] == *best});
+        return row;
+    };
+    table.mse = cells(mse_values);
+    table.relative_mse = cells(relative_values);
+    return table;
 }
 
 }  // namespace freezeray::report

@@ -79,6 +79,15 @@ struct AccuracyTable {
 };
 AccuracyTable accuracy_table(const Comparison& comparison);
 
+// The error of each run inside one crop against the reference: MSE and relMSE over the crop's
+// pixels, best (lowest) marked; empty without a reference. It shows where each integrator
+// wins, which one number for the whole image hides.
+struct CropErrorTable {
+    std::vector<Cell> mse;           // one per run
+    std::vector<Cell> relative_mse;  // one per run
+};
+CropErrorTable crop_error_table(const Comparison& comparison, const CropRegion& region);
+
 // Numbers as the report writes them: 4 significant digits (%.4g); "—" when negative (no value).
 std::string format_number(double value);
 // A slope with two decimals and a true minus sign: "−1.02".

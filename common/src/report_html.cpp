@@ -167,6 +167,19 @@ std::string images_section(const Comparison& comparison, const Layout& layout, c
             html += image_figure(png_data_uri(folder, crop_file(crop.number, name)), name, "");
         }
         html += "</div>\n";
+        const CropErrorTable errors = crop_error_table(comparison, crop.region);
+        if (errors.mse.empty()) continue;
+        html += "<table>\n<tr><th>in this crop</th>";
+        for (const std::string& name : layout.run_names) html += "<th>" + escape_xml(name) + "</th>";
+        auto row = [&](const char* label, const std::vector<Cell>& cells) {
+            html += std::string("</tr>\n<tr><td>") + label + "</td>";
+            for (const Cell& cell : cells)
+                html += cell.best ? "<td class=\"best\">" + escape_xml(cell.text) + " <span class=\"star\">★</span></td>"
+                                  : "<td>" + escape_xml(cell.text) + "</td>";
+        };
+        row("MSE", errors.mse);
+        row("relMSE", errors.relative_mse);
+        html += "</tr>\n</table>\n";
     }
     return html;
 }

@@ -99,6 +99,17 @@ std::string images_section(const Comparison& comparison, const Layout& layout) {
         std::vector<std::string> crop_files;
         for (const std::string& name : names) crop_files.push_back(crop_file(crop.number, name));
         text += "### " + describe_crop(crop) + "\n\n" + image_row(names, crop_files);
+        const CropErrorTable errors = crop_error_table(comparison, crop.region);
+        if (errors.mse.empty()) continue;
+        text += "| in this crop |";
+        for (const std::string& name : layout.run_names) text += " " + name + " |";
+        text += "\n| :-- |";
+        for (std::size_t i = 0; i < layout.run_names.size(); ++i) text += " --: |";
+        text += "\n| MSE |";
+        for (const Cell& cell : errors.mse) text += " " + (cell.best ? "**" + cell.text + "**" : cell.text) + " |";
+        text += "\n| relMSE |";
+        for (const Cell& cell : errors.relative_mse) text += " " + (cell.best ? "**" + cell.text + "**" : cell.text) + " |";
+        text += "\n\n";
     }
     return text;
 }

@@ -58,6 +58,10 @@ class Integrator {
 public:
     virtual ~Integrator() = default;
     virtual RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const = 0;
+
+    // True when the integrator samples lights directly, and so can find point, spot and
+    // directional lights, which no ray can hit (chapter 03).
+    virtual bool samples_lights() const { return false; }
 };
 
 // One sample of the radiance arriving along a camera ray. All randomness from `random`; scratch

@@ -29,6 +29,7 @@ public:
     explicit LightSamplingPathTracer(const LightSamplingSettings& settings);
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
+    bool samples_lights() const override { return true; }
 
     // One sample of the radiance arriving along `ray`.
     Spectrum li(const Ray& ray, const Scene& scene, const LightSampler& lights, PCG32& random, ScratchArena& arena) const;

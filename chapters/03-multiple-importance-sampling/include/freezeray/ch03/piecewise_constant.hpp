@@ -33,6 +33,11 @@ public:
     float discrete_probability(std::size_t i) const;
 
 private:
+    // The step that pdf() assigns to x in [0, 1).
+    std::size_t step_of(float x) const;
+    // The point (i + within) / n of step i, rounded to a float that step_of maps to i.
+    float point_in_step(std::size_t i, double within) const;
+
     std::vector<float> values_;
     std::vector<double> cdf_;  // n + 1 entries, cdf_[0] = 0, cdf_[n] = 1
     double integral_ = 0.0;
