@@ -414,3 +414,36 @@ TEST_CASE("false-colour maps: fixed log bounds on viridis", "[unit][report]") {
     for (const std::string label : {">1e-3<", ">1e-2<", ">1e-1<", ">1<", ">10<"}) CHECK(bar.find(label) != std::string::npos);
     CHECK(read_text(temporary.file("report/images/convergence.svg")).find("no checkpoints to plot") != std::string::npos);
 }
+
+TEST_CASE("report.md gives each crop's MSE and relMSE per integrator, lowest in bold", "[unit][report]") {
+    TemporaryFolder temporary;
+    const Comparison comparison = make_comparison();
+    write_comparison_report(comparison, temporary.file("report"));
+    const std::string markdown = read_text(temporary.file("report/report.md"));
+
+    // Crop 1 is (2, 3) to (7, 7); its errors recomputed here from the images.
+    Image reference(5, 4), naive(5, 4), mis(5, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 5; ++x) {
+            reference.at(x, y) = comparison.reference->at(2 + x, 3 + y);
+            naive.at(x, y) = comparison.runs[0].result.image.at(2 + x, 3 + y);
+            mis.at(x, y) = comparison.runs[1].result.image.at(2 + x, 3 + y);
+        }
+    const std::string section = "### crop 1";
+    const std::vector<std::string> mse_row = markdown_row(markdown, section, "MSE");
+    const std::vector<std::string> relative_row = markdown_row(markdown, section, "relMSE");
+    REQUIRE(mse_row.size() == 3);
+    REQUIRE(relative_row.size() == 3);
+    CHECK(number_in(mse_row[1]) == Approx(mse(naive, reference)).epsilon(1e-3));
+    CHECK(number_in(mse_row[2]) == Approx(mse(mis, reference)).epsilon(1e-3));
+    CHECK(number_in(relative_row[1]) == Approx(relative_mse(naive, reference)).epsilon(1e-3));
+    CHECK(number_in(relative_row[2]) == Approx(relative_mse(mis, reference)).epsilon(1e-3));
+    // pt-mis has a third of pt-naive's noise: it wins in the crop too.
+    CHECK(bold(mse_row[2]));
+    CHECK_FALSE(bold(mse_row[1]));
+
+    // Without a reference there is nothing to measure a crop against.
+    const std::string no_reference_folder = temporary.file("estimated");
+    write_comparison_report(make_comparison(false), no_reference_folder);
+    CHECK(read_text(no_reference_folder + "/report.md").find("in this crop") == std::string::npos);
+}

@@ -12,9 +12,10 @@
 
 namespace freezeray::ch03 {
 
-// The equirectangular parametrisation, in the light's own frame (y up): u = phi / 2 pi with phi
-// measured around +y from -z towards +x, v = theta / pi with theta measured from +y. The image's
-// centre column looks along -z, its top row straight up.
+// The equirectangular parametrisation, in the light's own frame (y up): u = phi / 2 pi with
+// phi = atan2(x, -z) in [0, 2 pi), measured around +y from -z towards +x; v = theta / pi with
+// theta measured from +y. The image's left and right edges look along -z, its centre column along
+// +z, +x a quarter of the width from the left; its top row looks straight up.
 Vec2 direction_to_equirectangular(const Vec3& direction);
 Vec3 equirectangular_to_direction(const Vec2& uv);
 
