@@ -289,7 +289,6 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         scene.defaults.seed = static_cast<std::uint64_t>(r.get_int("seed", 0));
         for (std::string& w : r.unused_key_warnings()) scene.warnings.push_back(std::move(w));
     }
-    for (std::string& w : top.unused_key_warnings()) scene.warnings.push_back(std::move(w));
 
     scene.triangle_lights.resize(scene.meshes.size());
     for (std::uint32_t mi = 0; mi < scene.meshes.size(); ++mi) {
@@ -308,6 +307,9 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         }
     }
     read_lights(top, root, scene, registry);
+    // Only now has every top-level key been asked for ("lights" by read_lights): collected
+    // earlier, a scene with lights got the warning "unknown key 'lights' is ignored".
+    for (std::string& w : top.unused_key_warnings()) scene.warnings.push_back(std::move(w));
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         scene.lights[i]->index = static_cast<std::uint32_t>(i);
         scene.lights[i]->preprocess(scene.bounds);

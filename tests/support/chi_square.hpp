@@ -57,7 +57,8 @@ struct ChiSquareOptions {
     // Cells expecting fewer samples are pooled into one (the chi-square approximation needs about 5).
     double minimum_expected_count = 5.0;
     // The pdf's integral over the domain must be this within integral_tolerance (relative); no
-    // check when empty.
+    // check when empty. It is also the sampler's success probability: the samples that return
+    // nothing are compared with N (1 - this), or with N (1 - the pdf's integral) when empty.
     std::optional<double> expected_pdf_integral = 1.0;
     double integral_tolerance = 1e-3;
 };

@@ -85,7 +85,10 @@ float EnvironmentMapLight::pdf_li(const Vec3& reference, const Vec3& wi) const {
     (void)reference;
     const Vec3 local = world_to_light_ * wi;
     const Vec2 uv = direction_to_equirectangular(local);
-    const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - local.y * local.y));
+    // sin theta from x and z, not sqrt(1 - y^2): within 3.5e-4 radians of a pole y rounds to +-1
+    // in float, and pdf_li was 0 there although sample_li goes there (a fifth of a percent of a
+    // pole row's samples; tests/chi2/test_ch03_lights.cpp caught it).
+    const float sin_theta = std::sqrt(local.x * local.x + local.z * local.z);
     return equirectangular_to_solid_angle_pdf(distribution_.pdf(uv.x, uv.y), sin_theta);
 }
 // END BOOK

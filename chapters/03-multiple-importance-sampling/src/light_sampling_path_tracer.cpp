@@ -63,8 +63,10 @@ static Spectrum sample_one_light(const Hit& hit, const Frame& frame, const Vec3&
 static float emission_weight(const PreviousBounce& previous, const Light* light, const Vec3& wi,
                              const LightSampler& lights, const LightSamplingSettings& settings) {
     if (previous.specular || light == nullptr) return 1.0f;
+    const float probability = lights.probability(*light);
+    if (probability == 0.0f) return 1.0f;  // never chosen (its power rounds to zero): only BSDF sampling finds it
     if (settings.combination == Combination::NextEventEstimation) return 0.0f;
-    const float light_pdf = lights.probability(*light) * light->pdf_li(previous.position, wi);
+    const float light_pdf = probability * light->pdf_li(previous.position, wi);
     return mis_weight(settings.heuristic, previous.bsdf_pdf, light_pdf);
 }
 // END BOOK

@@ -1,0 +1,121 @@
+// Grading tests of chapter 03's exercises. Each test case is named after its exercise, calls the
+// exercise's own function first (so that in a student copy it fails through its own stub), and
+// checks it against exact values, and for the two densities a light's sampling against its pdf
+// (chi-square, false-failure rate exercise_test_alpha each: 2 tests in this file).
+#include "freezeray/ch03/area_light.hpp"
+#include "freezeray/ch03/environment_light.hpp"
+#include "freezeray/ch03/mis.hpp"
+
+#include "light_chi_square.hpp"
+#include "statistics.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+using namespace freezeray;
+using namespace freezeray::ch03;
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// A float result of a few operations: within 4 roundings.
+constexpr double few_roundings = 4.0 * 0x1p-24;
+
+// light.sample_li(reference, .) against light.pdf_li(reference, .) on the sphere
+// (light_chi_square.hpp: samples that rounding put just across an edge are moved back, at most
+// 1e-4 of them).
+void check_light_sampling(const Light& light, const Vec3& reference, int resolution) {
+    stats::ChiSquareOptions options;
+    options.alpha = stats::exercise_test_alpha;
+    options.resolution = resolution;
+    const testing::LightChiSquare test = testing::light_chi_square_test(light, reference, options);
+    INFO(test.result.message);
+    CHECK(test.result.passed);
+    CHECK(test.samples_moved_across_edges <= options.sample_count / 10000);
+}
+
+}  // namespace
+
+TEST_CASE("ch03/power-heuristic", "[exercise]") {
+    // Veach 1997, eq. 9.13 with beta = 2: w_f = (n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2).
+    REQUIRE(power_heuristic(1, 1.0f, 1, 1.0f) == Approx(0.5).epsilon(few_roundings));
+    CHECK(power_heuristic(1, 3.0f, 1, 1.0f) == Approx(0.9).epsilon(few_roundings));   // 9 / 10, not 3 / 4
+    CHECK(power_heuristic(1, 1.0f, 1, 2.0f) == Approx(0.2).epsilon(few_roundings));   // 1 / 5
+    CHECK(power_heuristic(2, 1.0f, 1, 1.0f) == Approx(0.8).epsilon(few_roundings));   // the sample counts count
+    CHECK(power_heuristic(1, 1.0f, 2, 1.5f) == Approx(0.1).epsilon(few_roundings));   // 1 / (1 + 9)
+    CHECK(power_heuristic(1, 0.0f, 1, 5.0f) == 0.0f);  // f cannot produce the direction
+    CHECK(power_heuristic(1, 5.0f, 1, 0.0f) == Approx(1.0).epsilon(few_roundings));
+    // Densities whose squares overflow or underflow a float (a small light seen from far away):
+    // still finite, and the two weights still sum to one (1e-6: the two weights' roundings).
+    PCG32 random(4, 9);
+    for (int i = 0; i < 1000; ++i) {
+        const auto f = static_cast<float>(std::pow(10.0, 60.0 * random.next_float() - 30.0));
+        const auto g = static_cast<float>(std::pow(10.0, 60.0 * random.next_float() - 30.0));
+        const float w_f = power_heuristic(1, f, 1, g), w_g = power_heuristic(1, g, 1, f);
+        INFO("p_f = " << f << ", p_g = " << g << ": weights " << w_f << " and " << w_g);
+        REQUIRE(std::isfinite(w_f));
+        REQUIRE(std::isfinite(w_g));
+        REQUIRE(std::abs(double(w_f) + double(w_g) - 1.0) <= 1e-6);
+        // Against the formula in double where it does not overflow.
+        const double ratio = double(g) / double(f);
+        REQUIRE(w_f == Approx(1.0 / (1.0 + ratio * ratio)).epsilon(few_roundings).margin(1e-7));
+    }
+    CHECK(power_heuristic(1, 1e30f, 1, 1e30f) == Approx(0.5).epsilon(few_roundings));
+    CHECK(power_heuristic(1, 1e-30f, 1, 1e-30f) == Approx(0.5).epsilon(few_roundings));
+}
+
+TEST_CASE("ch03/environment-pdf", "[exercise]") {
+    // d omega = sin theta d theta d phi = 2 pi^2 sin theta du dv (pbrt-v3, eq. 14.8), so
+    // p(omega) = p(u, v) / (2 pi^2 sin theta).
+    REQUIRE(equirectangular_to_solid_angle_pdf(1.0f, 1.0f) == Approx(1.0 / (2.0 * pi * pi)).epsilon(few_roundings));
+    CHECK(equirectangular_to_solid_angle_pdf(3.0f, 0.5f) == Approx(3.0 / (pi * pi)).epsilon(few_roundings));
+    CHECK(equirectangular_to_solid_angle_pdf(0.25f, 0.01f) == Approx(12.5 / (pi * pi)).epsilon(few_roundings));
+    CHECK(equirectangular_to_solid_angle_pdf(0.0f, 0.7f) == 0.0f);
+    // A uniform image: its pixel weights are sin theta at the rows' centres, so at a row's centre
+    // pdf_uv = sin theta / mean(sin theta_y) and pdf_li = 1 / (2 pi^2 mean(sin theta_y)), within
+    // 1e-4 of the uniform 1 / (4 pi) for 64 rows (the midpoint rule's error for the integral of
+    // sin theta); exact here, in double, up to float rounding in the weights and the sines.
+    const int rows = 64;
+    double mean_sin = 0.0;
+    for (int y = 0; y < rows; ++y) mean_sin += std::sin(pi * (y + 0.5) / rows) / rows;
+    const EnvironmentMapLight uniform(Image(2 * rows, rows, Spectrum(1.0f)), Spectrum(1.0f), Mat3(1.0f));
+    for (const int y : {3, 20, 32, 50, 63}) {
+        const Vec3 d = equirectangular_to_direction(Vec2(0.37f, static_cast<float>((y + 0.5) / rows)));
+        INFO("row " << y);
+        CHECK(uniform.pdf_li(Vec3(0.0f), d) == Approx(1.0 / (2.0 * pi * pi * mean_sin)).epsilon(1e-5));
+    }
+    // A peaked map (one pixel 1e4 times the rest, black poles), rotated: its directions against
+    // pdf_li, which also integrates to one over the sphere.
+    Image peaked(16, 8, Spectrum(1.0f));
+    for (int x = 0; x < 16; ++x) peaked.at(x, 0) = peaked.at(x, 7) = Spectrum(0.0f);
+    peaked.at(5, 2) = Spectrum(1e4f);
+    const Mat3 rotation(glm::rotate(Mat4(1.0f), glm::radians(30.0f), glm::normalize(Vec3(1.0f, 0.0f, 1.0f))));
+    const EnvironmentMapLight light(peaked, Spectrum(1.0f), rotation);
+    check_light_sampling(light, Vec3(0.0f), 20);
+}
+
+TEST_CASE("ch03/area-to-solid-angle", "[exercise]") {
+    // dA = r^2 / |cos theta_light| d omega (Veach 1997, eq. 8.10): p_omega = p_A r^2 / cos.
+    REQUIRE(area_to_solid_angle_pdf(0.5f, 4.0f, 0.25f) == Approx(8.0).epsilon(few_roundings));
+    CHECK(area_to_solid_angle_pdf(1.0f, 1.0f, 1.0f) == Approx(1.0).epsilon(few_roundings));
+    CHECK(area_to_solid_angle_pdf(2.0f, 9.0f, 0.5f) == Approx(36.0).epsilon(few_roundings));
+    CHECK(area_to_solid_angle_pdf(0.1f, 100.0f, 1.0f) == Approx(10.0).epsilon(few_roundings));
+    // A triangle light's density towards its directions: sample_li against pdf_li from a point
+    // in front of it, 1.5 above (the triangle covers about a steradian); the pdf integrates to 1.
+    TriangleMesh mesh;
+    mesh.positions = {Vec3(-1.0f, -1.0f, 0.0f), Vec3(1.0f, -1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)};
+    mesh.triangles = {{0u, 1u, 2u}};
+    const TriangleLight light(mesh, 0, Spectrum(1.0f));
+    const Vec3 reference(0.3f, -0.2f, 1.5f);
+    const auto s = light.sample_li(reference, Vec2(0.3f, 0.4f));
+    REQUIRE(s);
+    // Uniform by area (1 / A = 1 / 2), then converted: r^2 / (A cos).
+    const Vec3 to_light = s->position - reference;
+    const double cos_light = -to_light.z / glm::length(to_light);  // at the light, whose normal is +z
+    CHECK(s->pdf == Approx(glm::dot(to_light, to_light) / (2.0 * cos_light)).epsilon(1e-5));
+    check_light_sampling(light, reference, 10);
+}
