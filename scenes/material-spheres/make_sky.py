@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes sky.pfm (run from this folder): a procedural HDR sky, 256 x 128 pixels, equirectangular
-in chapter 03's convention (the image's centre column looks along -z, its top row straight up;
+in chapter 03's convention (the left and right edges look along -z, the centre column along +z, the top row straight up;
 u = phi / 2 pi with phi = atan2(x, -z), v = theta / pi from +y):
 
   - the upper half, a sky: deep blue at the zenith, pale near the horizon;

@@ -67,7 +67,7 @@ std::vector<PixelGroup> blocks(int width, int height, int block_size) {
 std::string hard_scene(const std::string& relative) { return testing::scene_path("hard/" + relative); }
 
 const std::vector<std::string>& all_integrators() {
-    static const std::vector<std::string> names = {"pt-naive", "pt-is"};
+    static const std::vector<std::string> names = {"pt-naive", "pt-is", "pt-nee", "pt-mis"};
     return names;
 }
 

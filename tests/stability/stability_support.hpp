@@ -18,7 +18,7 @@ namespace freezeray::stability {
 
 // The level of one statistical test of the stability label (tests/STATISTICS.md, its table): a
 // two-sample test passes this; a one-sample test passes a tenth of it and counts as ten tests.
-inline constexpr double stability_test_alpha = 1e-7;
+inline constexpr double stability_test_alpha = 5e-8;
 inline constexpr double one_sample_stability_alpha = stability_test_alpha / 10.0;
 
 // Absolute path of scenes/hard/<relative>.
