@@ -16,6 +16,8 @@
 #include "evidence.hpp"
 #include "light_chi_square.hpp"
 
+#include "environment_images.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -81,23 +83,6 @@ Image peaked_image() {
     return image;
 }
 
-// A 32 x 16 map of varied colours (luminance from 0 to about 1, cubed for contrast), black at the
-// top three rows and along row 11, with a few black pixels.
-Image varied_image() {
-    Image image(32, 16);
-    PCG32 random(31, 7);
-    for (int y = 0; y < 16; ++y)
-        for (int x = 0; x < 32; ++x) {
-            const float a = random.next_float(), b = random.next_float(), c = random.next_float();
-            image.at(x, y) = (y < 3 || y == 11 || (x * 7 + y) % 13 == 0) ? Spectrum(0.0f) : Spectrum(a * a * a, b, c * c);
-        }
-    return image;
-}
-
-Mat3 rotation(float degrees, const Vec3& axis) {
-    return Mat3(glm::rotate(Mat4(1.0f), glm::radians(degrees), glm::normalize(axis)));
-}
-
 }  // namespace
 
 TEST_CASE("a triangle light's sample_li matches its pdf_li in front, grazing, close and far", "[chi2][lights][ch03]") {
@@ -119,7 +104,7 @@ TEST_CASE("a triangle light's sample_li matches its pdf_li in front, grazing, cl
     // a dozen cells of the finer grid.
     Chi2Request far;
     far.resolution = 40;
-    far.view = rotation(90.0f, Vec3(0.0f, 1.0f, 0.0f));
+    far.view = testing::rotation(90.0f, Vec3(0.0f, 1.0f, 0.0f));
     check_light(light, Vec3(2.0f, 1.0f, 5.5f), "triangle-far", far);
 }
 
@@ -150,12 +135,12 @@ TEST_CASE("an environment map's sample_li matches its pdf_li: varied, peaked, ro
     // The varied map's bottom row is bright: pdf_li grows like 1 / sin theta towards that pole
     // (a row of pixels is squeezed into a cap), integrable but not on the harness's grid points:
     // the pole of the map (its -y) is turned away from them, 17 degrees.
-    const EnvironmentMapLight varied(varied_image(), Spectrum(1.0f), rotation(17.0f, Vec3(1.0f, 0.3f, 0.2f)));
+    const EnvironmentMapLight varied(testing::varied_environment_image(), Spectrum(1.0f), testing::rotation(17.0f, Vec3(1.0f, 0.3f, 0.2f)));
     check_light(varied, Vec3(0.0f), "environment-varied", {1'000'000, 20, 1.0});
     // The peak covers 22.5 x 22.5 degrees: cells of 4.5 degrees x 0.05 in cos(theta) see its shape.
     const EnvironmentMapLight peaked(peaked_image(), Spectrum(1.0f), Mat3(1.0f));
     check_light(peaked, Vec3(4.0f, 5.0f, -6.0f), "environment-peaked", {1'000'000, 40, 1.0});
-    const EnvironmentMapLight rotated(peaked_image(), Spectrum(2.0f), rotation(50.0f, Vec3(1.0f, 2.0f, 0.5f)));
+    const EnvironmentMapLight rotated(peaked_image(), Spectrum(2.0f), testing::rotation(50.0f, Vec3(1.0f, 2.0f, 0.5f)));
     check_light(rotated, Vec3(0.0f), "environment-peaked-rotated", {1'000'000, 40, 1.0});
 }
 

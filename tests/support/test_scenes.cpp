@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <random>
 
 #ifndef FREEZERAY_SOURCE_DIR
@@ -63,6 +64,12 @@ TemporaryFolder::TemporaryFolder() {
     const auto base = std::filesystem::temp_directory_path();
     path_ = (base / ("freezeray-test-" + std::to_string(device()) + "-" + std::to_string(counter++))).string();
     std::filesystem::create_directories(path_);
+}
+
+std::string TemporaryFolder::write(const std::string& name, const std::string& text) const {
+    const std::string path = file(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
 }
 
 TemporaryFolder::~TemporaryFolder() {

@@ -12,6 +12,8 @@
 
 #include "chi_square.hpp"
 
+#include "environment_images.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -27,23 +29,6 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 constexpr double float_epsilon = 0x1p-24;  // a float rounding's relative error
-
-Mat3 rotation(float degrees, const Vec3& axis) {
-    return Mat3(glm::rotate(Mat4(1.0f), glm::radians(degrees), glm::normalize(axis)));
-}
-
-// A 32 x 16 map of varied colours, black at the top three rows and along row 11, bright near the
-// south pole: every kind of row the density has to handle.
-Image varied_image() {
-    Image image(32, 16);
-    PCG32 random(31, 7);
-    for (int y = 0; y < 16; ++y)
-        for (int x = 0; x < 32; ++x) {
-            const float a = random.next_float(), b = random.next_float(), c = random.next_float();
-            image.at(x, y) = (y < 3 || y == 11 || (x * 7 + y) % 13 == 0) ? Spectrum(0.0f) : Spectrum(a * a * a, b, c * c);
-        }
-    return image;
-}
 
 // The relative error bound of pdf_li at a direction of polar angle theta (in the light's frame),
 // from float arithmetic: a dozen roundings of 2^-24 in the density, plus sin theta taken as
@@ -156,8 +141,8 @@ TEST_CASE("an environment map's pdf_li integrates to one over the sphere", "[uni
     // 2 pi^2 is the image-space density, constant on each pixel. The midpoint rule on a grid of
     // 4 x 4 points per pixel is therefore exact; what is left is float rounding, bounded term by
     // term with pdf_li_relative_error (largest near the poles, where sin theta is small).
-    const Image image = varied_image();
-    for (const Mat3& light_to_world : {Mat3(1.0f), rotation(70.0f, Vec3(0.3f, -1.0f, 2.0f))}) {
+    const Image image = testing::varied_environment_image();
+    for (const Mat3& light_to_world : {Mat3(1.0f), testing::rotation(70.0f, Vec3(0.3f, -1.0f, 2.0f))}) {
         const EnvironmentMapLight light(image, Spectrum(1.0f), light_to_world);
         const int nu = image.width() * 4, nv = image.height() * 4;
         double integral = 0.0, error_bound = 0.0;
@@ -182,8 +167,8 @@ TEST_CASE("an environment map's pdf_li is the density its sample_li reports", "[
     // sample in a million): such a mismatch is accepted only that close to an edge. The map's
     // bottom rows are bright: 1e6 samples put about 12 within 3.5e-4 radians of its pole, where
     // y rounds to -1 (pdf_li once took sin theta from y there, and returned 0).
-    const Mat3 light_to_world = rotation(-35.0f, Vec3(1.0f, 1.0f, 0.0f));
-    const Image image = varied_image();
+    const Mat3 light_to_world = testing::rotation(-35.0f, Vec3(1.0f, 1.0f, 0.0f));
+    const Image image = testing::varied_environment_image();
     const EnvironmentMapLight light(image, Spectrum(1.0f), light_to_world);
     PCG32 random(8, 2);
     int at_edges = 0;
@@ -305,7 +290,7 @@ TEST_CASE("every light's power matches its closed form", "[unit][lights][ch03]")
     SECTION("an environment map of a constant image: the constant environment's power") {
         // Each row's solid angle is exact; the sum of 8 rows of 16 pixels rounds about 30 times.
         ConstantEnvironmentLight constant(Spectrum(0.25f, 0.5f, 1.0f));
-        EnvironmentMapLight map(Image(16, 8, Spectrum(0.25f, 0.5f, 1.0f)), Spectrum(1.0f), rotation(20.0f, Vec3(1.0f)));
+        EnvironmentMapLight map(Image(16, 8, Spectrum(0.25f, 0.5f, 1.0f)), Spectrum(1.0f), testing::rotation(20.0f, Vec3(1.0f)));
         constant.preprocess(bounds);
         map.preprocess(bounds);
         for (int c = 0; c < 3; ++c) CHECK(map.power()[c] == Approx(constant.power()[c]).epsilon(40.0 * float_epsilon));

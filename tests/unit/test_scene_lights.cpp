@@ -19,17 +19,12 @@ using freezeray::testing::TemporaryFolder;
 
 namespace {
 
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-}
-
 // A unit quad in the plane y = 1 facing down (-y), made of two emissive triangles, and a floor
 // triangle at y = 0 painted grey; plus a 4 x 2 environment map. `lights` is the JSON of the
 // "lights" array (or empty for none).
 std::string make_scene(const TemporaryFolder& folder, const std::string& lights) {
-    write_file(folder.file("room.mtl"), "newmtl floor\nKd 0.5 0.5 0.5\n\nnewmtl lamp\nKd 0 0 0\nKe 4 4 4\n");
-    write_file(folder.file("room.obj"), "mtllib room.mtl\n"
+    folder.write("room.mtl", "newmtl floor\nKd 0.5 0.5 0.5\n\nnewmtl lamp\nKd 0 0 0\nKe 4 4 4\n");
+    folder.write("room.obj", "mtllib room.mtl\n"
                                         "v -2 0 -2\nv 2 0 -2\nv 0 0 2\n"            // floor
                                         "v 0 1 0\nv 1 1 0\nv 1 1 1\nv 0 1 1\n"      // lamp
                                         "o floor\nusemtl floor\nf 1 3 2\n"
@@ -40,7 +35,7 @@ std::string make_scene(const TemporaryFolder& folder, const std::string& lights)
     std::string text = R"({"camera": {"position": [0, 0.5, 5], "look_at": [0, 0.5, 0], "fov_vertical_degrees": 40, "resolution": [8, 4]},
         "meshes": [{"file": "room.obj"}])";
     if (!lights.empty()) text += ", \"lights\": " + lights;
-    write_file(folder.file("scene.json"), text + "}");
+    folder.write("scene.json", text + "}");
     return folder.file("scene.json");
 }
 

@@ -14,18 +14,13 @@ using freezeray::testing::TemporaryFolder;
 
 namespace {
 
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-}
-
 // A one-triangle OBJ with one material, and a scene around it; `scene_text` may refer to
 // tri.obj.
 std::string make_scene(const TemporaryFolder& folder, const std::string& scene_text) {
-    write_file(folder.file("tri.mtl"), "newmtl paint\nKd 0.5 0.25 0.125\n\nnewmtl lamp\nKd 0 0 0\nKe 2 2 2\n");
-    write_file(folder.file("tri.obj"), "mtllib tri.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl paint\nf 1 2 3\n"
+    folder.write("tri.mtl", "newmtl paint\nKd 0.5 0.25 0.125\n\nnewmtl lamp\nKd 0 0 0\nKe 2 2 2\n");
+    folder.write("tri.obj", "mtllib tri.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nusemtl paint\nf 1 2 3\n"
                                        "usemtl lamp\nf 1 3 4\n");
-    write_file(folder.file("scene.json"), scene_text);
+    folder.write("scene.json", scene_text);
     return folder.file("scene.json");
 }
 
