@@ -212,6 +212,21 @@ void append_to_bytes(void* context, void* data, int size) {
     bytes->insert(bytes->end(), begin, begin + size);
 }
 
+// A JPEG codes every 8x8 block of its image with at least one bit (a baseline block's DC and
+// end-of-block codes, or a progressive DC scan's code), so a file shorter than blocks / 8 bytes
+// cannot hold the image its header claims. stb_image would decode it anyway, as an image of
+// zeros of the claimed size (found by fuzz_image: 662 bytes claiming 65531 x 2300 pixels, decoded
+// into 1.8 GB over more than 10 seconds).
+void check_jpeg_data_size(std::size_t file_size, int width, int height, const std::string& path) {
+    const std::uint64_t blocks = static_cast<std::uint64_t>((width + 7) / 8) * static_cast<std::uint64_t>((height + 7) / 8);
+    const std::uint64_t minimum = blocks / 8;
+    if (file_size < minimum)
+        throw InputError(path, "the JPEG header claims " + std::to_string(width) + "x" + std::to_string(height) +
+                                   " pixels, which need at least " + std::to_string(minimum) +
+                                   " bytes of coded data, but the file has " + std::to_string(file_size) +
+                                   " bytes (truncated or corrupt)");
+}
+
 }  // namespace
 
 // Decodes an 8- or 16-bit PNG, JPEG, BMP or TGA file from sRGB to linear, dropping any alpha.
@@ -239,6 +254,7 @@ Image decode_srgb(const Bytes& bytes, const std::string& path) {
         throw InputError(path, "not a valid PNG, JPEG, BMP or TGA file (" + stb_reason() + ")");
     }
     check_image_size(width, height, path);
+    if (format == Format::jpeg) check_jpeg_data_size(bytes.size(), width, height, path);
 
     Image image;
     if (stbi_is_16_bit_from_memory(bytes.data(), length) != 0) {

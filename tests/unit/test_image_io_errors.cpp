@@ -166,6 +166,26 @@ TEST_CASE("a PNG header announcing more than 2^28 pixels is refused before decod
                Contains(folder.file("huge.png")) && Contains("too large"));
 }
 
+TEST_CASE("a JPEG far too short for the size its header claims is refused before decoding", "[unit][image]") {
+    // Found by fuzz_image: 662 bytes claiming 65531 x 2300 pixels (at least 1 bit per 8x8 block:
+    // 294 kB). The file without the fuzz target's first byte, which chose the extension.
+    std::vector<unsigned char> bytes =
+        read_bytes(std::string(FREEZERAY_SOURCE_DIR) + "/tests/fuzz/regressions/image/jpeg-huge-size-in-tiny-file.bin");
+    REQUIRE(bytes.size() == 663);
+    bytes.erase(bytes.begin());
+    TemporaryFolder folder;
+    write_bytes(folder.file("tiny.jpg"), bytes);
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("tiny.jpg")); }),
+               Contains(folder.file("tiny.jpg")) && Contains("65531x2300") && Contains("truncated or corrupt"));
+
+    // The fuzzer's valid JPEG seed (4 x 4, 662 bytes) is still read.
+    bytes = read_bytes(std::string(FREEZERAY_SOURCE_DIR) + "/tests/fuzz/corpus/image/jpeg.bin");
+    bytes.erase(bytes.begin());
+    write_bytes(folder.file("seed.jpg"), bytes);
+    const Image seed = read_image(folder.file("seed.jpg"));
+    CHECK(seed.width() > 0);
+}
+
 TEST_CASE("an EXR data window of more than 2^28 pixels is refused before decoding", "[unit][image]") {
     TemporaryFolder folder;
     write_image(folder.file("huge.exr"), Image(2, 2, Spectrum(0.5f)));
