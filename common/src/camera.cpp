@@ -28,4 +28,61 @@ Ray PinholeCamera::generate_ray(const Vec2& film_position) const {
 }
 // END BOOK
 
+float PinholeCamera::image_plane_area() const {
+    const float half_height = tan_half_fov_y_;
+    const float half_width = aspect_ * tan_half_fov_y_;
+    return 4.0f * half_width * half_height;
+}
+
+std::optional<Vec2> PinholeCamera::raster_position(const Vec3& direction) const {
+    const float cos_theta = glm::dot(direction, forward_);
+    if (!(cos_theta > 0.0f)) return std::nullopt;
+    // The point where the direction crosses the image plane at distance 1, in the camera's
+    // right/up coordinates, then generate_ray's mapping backwards.
+    const Vec3 on_plane = direction / cos_theta;
+    const float ndc_x = glm::dot(on_plane, right_) / (aspect_ * tan_half_fov_y_);
+    const float ndc_y = glm::dot(on_plane, up_) / tan_half_fov_y_;
+    const Vec2 film((ndc_x + 1.0f) * 0.5f * static_cast<float>(width_), (1.0f - ndc_y) * 0.5f * static_cast<float>(height_));
+    if (!(film.x >= 0.0f && film.x < static_cast<float>(width_) && film.y >= 0.0f && film.y < static_cast<float>(height_)))
+        return std::nullopt;
+    return film;
+}
+
+// BOOK(camera-importance)
+float PinholeCamera::importance(const Ray& ray) const {
+    if (!raster_position(ray.direction)) return 0.0f;
+    // Over the film, dA on the image plane at distance 1 is seen under the solid angle
+    // cos^3(theta) dA, so We cos(theta) dw = dA / A: integrating over the film gives 1.
+    const float cos_theta = glm::dot(ray.direction, forward_);
+    const float cos2 = cos_theta * cos_theta;
+    return 1.0f / (image_plane_area() * cos2 * cos2);
+}
+
+float PinholeCamera::pdf_direction(const Vec3& direction) const {
+    if (!raster_position(direction)) return 0.0f;
+    const float cos_theta = glm::dot(direction, forward_);
+    return 1.0f / (image_plane_area() * cos_theta * cos_theta * cos_theta);
+}
+
+std::optional<CameraImportanceSample> PinholeCamera::sample_wi(const Vec3& reference) const {
+    const Vec3 to_camera = position_ - reference;
+    const float distance = glm::length(to_camera);
+    if (!(distance > 0.0f)) return std::nullopt;
+    const Vec3 wi = to_camera / distance;
+    const std::optional<Vec2> raster = raster_position(-wi);
+    if (!raster) return std::nullopt;
+    const float cos_theta = glm::dot(-wi, forward_);
+    CameraImportanceSample sample;
+    sample.wi = wi;
+    sample.importance = importance(Ray{position_, -wi});
+    // The pinhole's delta position, converted from "area" (a point: density 1) to solid angle at
+    // the reference point: distance^2 / cos(theta_camera) (pbrt-v3's PerspectiveCamera::Sample_Wi
+    // with a lens of area 1).
+    sample.pdf = distance * distance / cos_theta;
+    sample.raster_position = *raster;
+    sample.distance = distance;
+    return sample;
+}
+// END BOOK
+
 }  // namespace freezeray

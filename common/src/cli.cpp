@@ -50,7 +50,16 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     if (scene.environment != nullptr) std::cout << ", one of them the environment";
     std::cout << ")\n";
     std::cout << "effects:\n" << scene.effects.describe();
-    std::cout << "suggested:  " << scene.effects.suggested_integrator(registry.chapter()) << "\n";
+    // The best suited integrator this renderer has (a chapter in progress may not have its own yet).
+    std::string suggestion = scene.effects.suggested_integrator(registry.chapter());
+    for (int chapter = registry.chapter(); chapter >= 1; --chapter) {
+        const std::string candidate = scene.effects.suggested_integrator(chapter);
+        if (registry.has(CapabilityKind::Integrator, candidate.substr(0, candidate.find(' ')))) {
+            suggestion = candidate;
+            break;
+        }
+    }
+    std::cout << "suggested:  " << suggestion << "\n";
     return 0;
 }
 

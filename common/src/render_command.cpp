@@ -21,11 +21,14 @@ namespace freezeray {
 namespace {
 
 // The integrator for a render that names none: the one the scene's effects call for, if this
-// renderer has it, else the first registered.
+// renderer has it, else the best suited one of an earlier chapter (a chapter may be in progress:
+// chapter 04's `bdpt` is suggested before it exists), else the first registered.
 std::string default_integrator(const Scene& scene, const Registry& registry) {
-    const std::string suggestion = scene.effects.suggested_integrator(registry.chapter());
-    const std::string name = suggestion.substr(0, suggestion.find(' '));
-    if (registry.has(CapabilityKind::Integrator, name)) return name;
+    for (int chapter = registry.chapter(); chapter >= 1; --chapter) {
+        const std::string suggestion = scene.effects.suggested_integrator(chapter);
+        const std::string name = suggestion.substr(0, suggestion.find(' '));
+        if (registry.has(CapabilityKind::Integrator, name)) return name;
+    }
     return registry.list(CapabilityKind::Integrator).front().name;
 }
 
@@ -130,6 +133,9 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     const RenderStateInfo info{options.scene, integrator_name, settings.seed, settings.first_sample, settings.max_depth,
                                scene.camera->width(), scene.camera->height()};
     if (!options.resume.empty()) {
+        if (!integrator->resumable())
+            throw InputError("--resume", integrator_name + " splats onto the film and cannot be resumed exactly; render "
+                                         "more samples with another --seed or --sample-offset and `merge` the renders");
         const RenderState saved = read_render_state(options.resume);
         check_resumable(saved.info, info);
         settings.resume = saved.film;
@@ -168,9 +174,15 @@ int run_render(const RenderOptions& options, const Registry& registry) {
                   << " samples were NaN, infinite or negative and were counted as zero; this is a bug in the "
                      "integrator or a material, please report it with the scene\n";
     if (result.interrupted) {
-        std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp in every pixel) and "
-                  << state_path_for(out) << "; continue with the same command and --resume " << state_path_for(out)
-                  << "\n";
+        if (integrator->resumable())
+            std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp in every pixel) and "
+                      << state_path_for(out) << "; continue with the same command and --resume " << state_path_for(out)
+                      << "\n";
+        else
+            std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp) and "
+                      << state_path_for(out) << "; " << integrator_name
+                      << " cannot be resumed: render the rest with --sample-offset " << result.samples_per_pixel
+                      << " and `merge` the two\n";
         std::cout << out << "\n";
         return 128 + static_cast<int>(received_signal);
     }

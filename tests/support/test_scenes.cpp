@@ -4,6 +4,7 @@
 #include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/ch03/register_chapter03.hpp"
+#include "freezeray/ch04/register_chapter04.hpp"
 #include "freezeray/progress.hpp"
 
 #include <atomic>
@@ -34,10 +35,11 @@ std::optional<std::string> shared_scenes_folder() {
 
 const Registry& full_registry() {
     static const Registry registry = [] {
-        Registry r("freezeray", 3);
+        Registry r("freezeray", 4);
         register_chapter01(r);
         register_chapter02(r);
         register_chapter03(r);
+        register_chapter04(r);
         return r;
     }();
     return registry;

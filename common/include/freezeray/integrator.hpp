@@ -6,6 +6,7 @@
 #include "freezeray/random.hpp"
 #include "freezeray/ray.hpp"
 #include "freezeray/scratch_arena.hpp"
+#include "freezeray/splat_film.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -62,6 +63,10 @@ public:
     // True when the integrator samples lights directly, and so can find point, spot and
     // directional lights, which no ray can hit (chapter 03).
     virtual bool samples_lights() const { return false; }
+
+    // False when a saved render cannot be continued exactly (`--resume`): a splatting film's
+    // state is not a per-pixel count that a pass can go on from (render_light_paths).
+    virtual bool resumable() const { return true; }
 };
 
 // One sample of the radiance arriving along a camera ray. All randomness from `random`; scratch
@@ -72,6 +77,20 @@ using RadianceEstimator = std::function<Spectrum(const Ray& ray, PCG32& random, 
 // sample count, the time budget or the target error is reached; each sample from its own stream.
 RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, Progress& progress,
                            const RadianceEstimator& li);
+
+// One light path (or, for bidirectional path tracing, one pair of subpaths) for work slot
+// `slot` in [0, pixel count): everything it contributes goes into `splats`, at any pixel. All
+// randomness from `random`; scratch allocations in `arena`, reset before every call.
+using LightPathEstimator =
+    std::function<void(std::uint32_t slot, PCG32& random, ScratchArena& arena, SplatBuffer& splats)>;
+
+// The image loop of integrators that splat (chapter 04): batches of one light path per slot
+// (pixel count paths per batch, each from make_pixel_stream(seed, slot, sample)), so that a
+// batch adds one "sample per pixel", until the sample count, the time or the target error is
+// reached. A stop request ends the render between batches. The result's film is
+// SplatFilm::to_film of the batches done. Refuses settings.resume with an InputError.
+RenderResult render_light_paths(const Scene& scene, const RenderSettings& settings, Progress& progress,
+                                const LightPathEstimator& estimator);
 
 // An integrator that estimates each pixel independently from camera paths: it only says how one
 // camera ray's radiance is estimated (li); the image loop, the film and the passes are shared.

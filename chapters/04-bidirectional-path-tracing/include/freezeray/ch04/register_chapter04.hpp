@@ -1,0 +1,12 @@
+// What chapter 04 adds to the renderer.
+#pragma once
+
+#include "freezeray/registry.hpp"
+
+namespace freezeray {
+
+// Registers chapter 04's integrators ("light-tracing"; "bdpt" is still to come). Call after
+// register_chapter03.
+void register_chapter04(Registry& registry);
+
+}  // namespace freezeray

@@ -1,0 +1,154 @@
+// Light tracing: the t = 1 strategies of bidirectional path tracing (book chapter 04; Veach 1997,
+// section 10.2; pbrt-v3, sections 16.1 and 16.3).
+#include "freezeray/ch04/light_tracer.hpp"
+
+#include "freezeray/ch02/path_tracer.hpp"
+
+#include <cmath>
+
+namespace freezeray::ch04 {
+
+// BOOK(shading-normal-correction)
+float shading_normal_correction(const Vec3& wo, const Vec3& wi, const Vec3& shading_normal, const Vec3& geometric_normal) {
+    // With shading normals the BSDF is not symmetric: radiance sees |wi.ns| where the true
+    // projected area is |wi.ng|. A particle carrying importance's adjoint must exchange the
+    // roles of wo and wi (Veach 1997, eq. 5.19).
+    const float denominator = std::abs(glm::dot(wo, geometric_normal)) * std::abs(glm::dot(wi, shading_normal));
+    if (denominator == 0.0f) return 0.0f;
+    return std::abs(glm::dot(wo, shading_normal)) * std::abs(glm::dot(wi, geometric_normal)) / denominator;
+}
+// END BOOK
+
+// BOOK(connect-to-camera)
+std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit& hit, const BSDF& bsdf, const Frame& frame,
+                                                  const Vec3& wo_world, const Spectrum& beta) {
+    const std::optional<CameraImportanceSample> camera = scene.camera->sample_wi(hit.position);
+    if (!camera || camera->pdf <= 0.0f || camera->importance <= 0.0f) return std::nullopt;
+    // The light arrives from wo_world and leaves towards the camera: in the radiance convention
+    // of chapter 02's BSDFs that is f(wo = towards the camera, wi = towards the light).
+    const Vec3 to_camera = frame.to_local(camera->wi);
+    const Spectrum f = bsdf.eval(to_camera, frame.to_local(wo_world));
+    if (is_black(f)) return std::nullopt;
+    if (scene.occluded(hit.spawn_ray_to(scene.camera->position()))) return std::nullopt;
+    const float correction = shading_normal_correction(wo_world, camera->wi, frame.n, hit.geometric_normal);
+    // beta f |cos theta| We / pdf: pdf = distance^2 / cos(theta_camera) turns the pinhole's
+    // importance into the importance arriving here (pbrt-v3, section 16.3.1, eq. 16.17).
+    const Spectrum value = beta * f * (abs_cos_theta(to_camera) * correction * camera->importance / camera->pdf);
+    return CameraConnection{camera->raster_position, value};
+}
+// END BOOK
+
+namespace {
+
+// A conservative bound on the rounding error of a point interpolated on a triangle: the light
+// sample's origin has no Hit to carry one. Relative 2^-18, above float interpolation error
+// (about 7 ulp, pbrt-v3, section 3.9.4), so the spawned ray cannot hit its own emitter again.
+Vec3 emission_origin_error(const Vec3& point) { return glm::abs(point) * 0x1p-18f; }
+
+}  // namespace
+
+// BOOK(connect-light-to-camera)
+std::optional<CameraConnection> connect_light_to_camera(const Scene& scene, const LightEmissionSample& emission,
+                                                        float light_probability) {
+    const Vec3& point = emission.ray.origin;
+    const std::optional<CameraImportanceSample> camera = scene.camera->sample_wi(point);
+    if (!camera || camera->pdf <= 0.0f || camera->importance <= 0.0f) return std::nullopt;
+    // An area light is a one-sided Lambertian emitter: the same radiance towards the camera as
+    // along the sampled ray, if the camera is in front of it.
+    const float cos_light = glm::dot(emission.normal, camera->wi);
+    if (cos_light <= 0.0f) return std::nullopt;
+    const Vec3 origin = offset_ray_origin(point, emission_origin_error(point), emission.normal, camera->wi);
+    const float distance = glm::length(scene.camera->position() - origin);
+    if (scene.occluded(Ray{origin, camera->wi, distance * (1.0f - 1e-4f)})) return std::nullopt;
+    // Le cos(theta_light) We / (P(light) p_A(point) p(camera)): the emission of the chosen point
+    // carried to the pinhole (the s = 1, t = 1 strategy; Veach 1997, section 10.2).
+    const Spectrum value = emission.radiance * (cos_light * camera->importance /
+                                                (light_probability * emission.pdf_position * camera->pdf));
+    return CameraConnection{camera->raster_position, value};
+}
+// END BOOK
+
+LightTracer::LightTracer(const LightTracingSettings& settings) : settings_(settings) {
+    if (settings_.max_depth <= 0) settings_.max_depth = ch02::DefaultMaxDepth;
+}
+
+RenderResult LightTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
+    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    return render_light_paths(scene, settings, progress,
+                              [&](std::uint32_t, PCG32& random, ScratchArena& arena, SplatBuffer& splats) {
+                                  trace_light_path(scene, lights, random, arena, splats);
+                              });
+}
+
+// BOOK(trace-light-path)
+void LightTracer::trace_light_path(const Scene& scene, const ch03::LightSampler& lights, PCG32& random,
+                                   ScratchArena& arena, SplatBuffer& splats) const {
+    // Choose a light by power and a ray leaving it (chapter 03's sample_le).
+    const std::optional<ch03::LightSampler::Choice> choice = lights.sample(random.next_float());
+    if (!choice || choice->probability <= 0.0f) return;
+    const Vec2 u_position(random.next_float(), random.next_float());
+    const Vec2 u_direction(random.next_float(), random.next_float());
+    const std::optional<LightEmissionSample> emission = choice->light->sample_le(u_position, u_direction);
+    if (!emission || emission->pdf_position <= 0.0f || emission->pdf_direction <= 0.0f || is_black(emission->radiance))
+        return;
+
+    // s = 1, t = 1: an emitter seen directly. Only area lights: a pinhole sees a point light
+    // with probability zero in every camera-path integrator of the course, and directional and
+    // environment lights reach it only along one direction each (see the chapter's README).
+    if (choice->light->type() == LightType::Area && settings_.max_depth >= 1)
+        if (const auto connection = connect_light_to_camera(scene, *emission, choice->probability))
+            splats.add_splat(connection->raster_position, connection->value);
+
+    // The throughput of the path so far: Le |cos| / (P(light) p_A p_w) (pbrt-v3, eq. 16.15), the
+    // cosine 1 for point lights (no surface: zero normal).
+    const float cos_light = glm::dot(emission->normal, emission->normal) > 0.0f
+                                ? std::abs(glm::dot(emission->normal, emission->ray.direction))
+                                : 1.0f;
+    const Spectrum emitted = emission->radiance * (cos_light / (choice->probability * emission->pdf_position *
+                                                                emission->pdf_direction));
+    Spectrum scattering(1.0f);  // the product of BSDF weights: what Russian roulette looks at
+    const Vec3& origin = emission->ray.origin;
+    Ray ray{offset_ray_origin(origin, emission_origin_error(origin), emission->normal, emission->ray.direction),
+            emission->ray.direction};
+    // `segments` counts the light path's segments; a connection adds one more (to the camera).
+    for (int segments = 1; segments + 1 <= settings_.max_depth; ++segments) {
+        const std::optional<Hit> hit = scene.intersect(ray);
+        if (!hit) break;
+        const BSDF& bsdf = *scene.material(*hit).bsdf(*hit, arena);
+        const Vec3 wo_world = -ray.direction;  // back towards the light
+        // Two-sided reflectors face the arriving light (chapter 02 turns them to the viewer).
+        Vec3 normal = hit->shading_normal;
+        if (!has_flag(bsdf.flags(), BSDF_Transmission) && glm::dot(normal, wo_world) < 0.0f) normal = -normal;
+        const Frame frame(normal);
+
+        // t = 1: connect this vertex to the camera (a delta lobe cannot be connected).
+        if (bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy))
+            if (const auto connection = connect_to_camera(scene, *hit, bsdf, frame, wo_world, emitted * scattering))
+                splats.add_splat(connection->raster_position, connection->value);
+        if (segments + 2 > settings_.max_depth) break;
+
+        // Continue by sampling the BSDF from the light's side. The adjoint BSDF: the shading
+        // normal correction, and no 1 / eta^2 on refraction (radiance is compressed by it,
+        // importance is not; Veach 1997, section 5.2; pbrt-v3, section 16.1).
+        const Vec2 u(random.next_float(), random.next_float());
+        const std::optional<BSDFSample> sample = bsdf.sample(frame.to_local(wo_world), u, random.next_float());
+        if (!sample || sample->pdf <= 0.0f) break;
+        const Vec3 wi_world = frame.to_world(sample->wi);
+        float adjoint = shading_normal_correction(wo_world, wi_world, frame.n, hit->geometric_normal);
+        if (has_flag(sample->flags, BSDF_Transmission)) adjoint *= sample->eta * sample->eta;
+        scattering *= sample->weight() * adjoint;
+        if (is_black(scattering)) break;
+
+        // Russian roulette on the scattering alone: the emitted part of the throughput is in
+        // watts and says nothing about how much of it the path still carries.
+        if (segments >= ch02::RussianRouletteStart) {
+            const float q = ch02::russian_roulette_continue_probability(scattering);
+            if (random.next_float() >= q) break;
+            scattering /= q;
+        }
+        ray = hit->spawn_ray(wi_world);
+    }
+}
+// END BOOK
+
+}  // namespace freezeray::ch04
