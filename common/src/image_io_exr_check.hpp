@@ -128,7 +128,22 @@ private:
         if (data_size < 0 || std::uint64_t(data_size) > bytes_.size() - offset - header_bytes)
             refuse("a chunk runs past the end of the file");
         if (compression_ == 0 && data_size < raw_bytes) refuse("an uncompressed chunk is too short");
+        // tinyexr takes a PIZ chunk as compressed unless its size is exactly the raw size.
+        if (compression_ == 4 && data_size != raw_bytes)
+            check_piz_header(static_cast<std::size_t>(offset) + header_bytes, data_size);
         return static_cast<std::size_t>(offset);
+    }
+
+    // PIZ data opens with the first and last index of the non-zero bytes of a bitmap (2 bytes
+    // each), those bitmap bytes, then the 4-byte length of the Huffman data. tinyexr copies all of
+    // them without comparing them with the chunk's size (found by fuzz_image: a heap read past
+    // the end of the file in DecompressPiz), so they must fit in the chunk.
+    void check_piz_header(std::size_t data, std::int32_t data_size) const {
+        if (data_size < 4) refuse("a PIZ chunk is too short for its header");
+        const unsigned first = bytes_[data] | (unsigned(bytes_[data + 1]) << 8);
+        const unsigned last = bytes_[data + 2] | (unsigned(bytes_[data + 3]) << 8);
+        const std::int64_t needed = 4 + (first <= last ? std::int64_t(last) - first + 1 : 0) + 4;
+        if (data_size < needed) refuse("a PIZ chunk's bitmap and Huffman length run past the end of the chunk");
     }
 
     // Scanline files: blocks of 1, 16 (ZIP) or 32 (PIZ) rows, each chunk starting with its first

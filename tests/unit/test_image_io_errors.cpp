@@ -186,6 +186,23 @@ TEST_CASE("a JPEG far too short for the size its header claims is refused before
     CHECK(seed.width() > 0);
 }
 
+TEST_CASE("a PIZ chunk whose bitmap runs past its end is refused before tinyexr reads past it", "[unit][image]") {
+    // Found by fuzz_image: a 192-byte PIZ chunk whose bitmap spans bytes 0 to 227; tinyexr
+    // copied them from beyond the end of the file. The files without the fuzz target's first byte.
+    const std::string folder_path = std::string(FREEZERAY_SOURCE_DIR) + "/tests/fuzz/";
+    TemporaryFolder folder;
+    std::vector<unsigned char> bytes = read_bytes(folder_path + "regressions/image/exr-piz-bitmap-past-end.bin");
+    bytes.erase(bytes.begin());
+    write_bytes(folder.file("piz.exr"), bytes);
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("piz.exr")); }),
+               Contains(folder.file("piz.exr")) && Contains("PIZ chunk"));
+    // A valid PIZ-compressed file (the fuzzer's seed) is still read.
+    bytes = read_bytes(folder_path + "corpus/image/exr-piz-half.bin");
+    bytes.erase(bytes.begin());
+    write_bytes(folder.file("seed.exr"), bytes);
+    CHECK(read_image(folder.file("seed.exr")).pixel_count() > 0);
+}
+
 TEST_CASE("an EXR data window of more than 2^28 pixels is refused before decoding", "[unit][image]") {
     TemporaryFolder folder;
     write_image(folder.file("huge.exr"), Image(2, 2, Spectrum(0.5f)));
