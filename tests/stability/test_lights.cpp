@@ -368,3 +368,27 @@ TEST_CASE("an environment with black rows and a one-pixel sun: samples avoid the
         SUCCEED(test.message);
     }
 }
+
+// --- Chapter 04: the scenes of bidirectional methods ----------------------------------------------
+
+TEST_CASE("the lamp behind a shade and the glass sphere's caustic give valid, lit images with every integrator",
+          "[stability][lights][ch04]") {
+    // A bulb seen only through a shade's opening (light reaching the room after a bounce) and a
+    // small light focused through smooth glass: paths rarely found from the camera side.
+    for (const char* scene : {"../cornell-lamp/scene.json", "../caustic/scene.json"}) {
+        for (const std::string& integrator : all_integrators()) {
+            HardRender request;
+            request.scene = scene;
+            request.integrator = integrator;
+            request.size = 32;
+            request.samples_per_pixel = 16;
+            request.seed = 141;
+            const RenderResult result = render(request);
+            check_valid(result, std::string(scene) + " with " + integrator);
+            std::size_t lit = 0;
+            for (const Spectrum& p : result.image.pixels()) lit += is_black(p) ? 0 : 1;
+            INFO(scene << " with " << integrator << ": " << lit << " lit pixels");
+            CHECK(lit > 0u);
+        }
+    }
+}
