@@ -18,7 +18,7 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in scenes/tools
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from meshes import icosphere  # noqa: E402
+from meshes import ObjBuilder, icosphere  # noqa: E402
 
 CENTRE = (490.0, 490.0)      # (x, z) of the lamp's axis; the box spans x in [0, 556], z in [0, 559.2]
 SHADE_RADIUS = 45.0
@@ -29,26 +29,6 @@ BULB_Y = SHADE_BOTTOM + 28.0
 BULB_RADIANCE = (800.0, 640.0, 400.0)    # warm white
 POLE_HALF_WIDTH = 4.0
 
-
-class Obj:
-    def __init__(self):
-        self.vertices, self.groups = [], []
-
-    def add(self, material, vertices, faces):
-        base = len(self.vertices)
-        self.vertices += vertices
-        self.groups.append((material, [tuple(base + i for i in f) for f in faces]))
-
-    def write(self, path, header):
-        with open(path, "w") as out:
-            out.write(header)
-            out.write("mtllib lamp.mtl\n")
-            for v in self.vertices:
-                out.write("v %.4f %.4f %.4f\n" % v)
-            for material, faces in self.groups:
-                out.write("usemtl %s\n" % material)
-                for f in faces:
-                    out.write("f " + " ".join(str(i + 1) for i in f) + "\n")
 
 
 def shade():
@@ -80,7 +60,7 @@ def pole():
 
 
 def main():
-    lamp = Obj()
+    lamp = ObjBuilder("lamp.mtl", 4)
     lamp.add("shade", *shade())
     lamp.add("pole", *pole())
     vertices, faces = icosphere(1)

@@ -5,6 +5,7 @@
 #include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/ch03/register_chapter03.hpp"
 #include "freezeray/ch04/register_chapter04.hpp"
+#include "freezeray/error.hpp"
 #include "freezeray/progress.hpp"
 
 #include <atomic>
@@ -43,6 +44,15 @@ const Registry& full_registry() {
         return r;
     }();
     return registry;
+}
+
+std::string scene_load_error(const std::string& path, const Registry& registry) {
+    try {
+        load_scene(path, registry);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
 }
 
 RenderResult render(const TestRender& request) {

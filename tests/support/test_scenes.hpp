@@ -23,6 +23,9 @@ std::optional<std::string> shared_scenes_folder();
 // A registry with every chapter registered (what `freezeray` has).
 const Registry& full_registry();
 
+// The InputError message of loading a scene, or "(no error)" when it loads.
+std::string scene_load_error(const std::string& path, const Registry& registry = full_registry());
+
 struct TestRender {
     std::string scene;             // path of the scene JSON
     std::string integrator = "pt-naive";

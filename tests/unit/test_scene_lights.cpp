@@ -39,15 +39,6 @@ std::string make_scene(const TemporaryFolder& folder, const std::string& lights)
     return folder.file("scene.json");
 }
 
-std::string load_error(const std::string& path, const Registry& registry = testing::full_registry()) {
-    try {
-        load_scene(path, registry);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
 }  // namespace
 
 TEST_CASE("each light type of the lights array lands in scene.lights after the area lights", "[unit][scene][ch03]") {
@@ -121,16 +112,16 @@ TEST_CASE("every emissive triangle has an area light, and a hit maps back to it"
 TEST_CASE("light errors name the JSON path or the file", "[unit][scene][ch03]") {
     TemporaryFolder folder;
     SECTION("an unknown type, with the nearest name") {
-        const std::string message = load_error(make_scene(folder, R"([{"type": "spott", "position": [0, 1, 0]}])"));
+        const std::string message = testing::scene_load_error(make_scene(folder, R"([{"type": "spott", "position": [0, 1, 0]}])"));
         CHECK_THAT(message, Catch::Contains("/lights/0/type") && Catch::Contains("unknown light 'spott'") &&
                                 Catch::Contains("did you mean 'spot'"));
     }
     SECTION("type area is refused: area lights come from emissive materials") {
-        const std::string message = load_error(make_scene(folder, R"([{"type": "constant"}, {"type": "area"}])"));
+        const std::string message = testing::scene_load_error(make_scene(folder, R"([{"type": "constant"}, {"type": "area"}])"));
         CHECK_THAT(message, Catch::Contains("/lights/1/type") && Catch::Contains("emissive materials"));
     }
     SECTION("two environments are refused, naming the first") {
-        const std::string message = load_error(make_scene(folder, R"([{"type": "constant"}, {"type": "point", "position": [0, 0, 0]},
+        const std::string message = testing::scene_load_error(make_scene(folder, R"([{"type": "constant"}, {"type": "point", "position": [0, 0, 0]},
             {"type": "environment", "file": "sky.pfm"}])"));
         CHECK_THAT(message, Catch::Contains("/lights/2/type") && Catch::Contains("at most one environment") &&
                                 Catch::Contains("/lights/0"));
@@ -140,40 +131,40 @@ TEST_CASE("light errors name the JSON path or the file", "[unit][scene][ch03]") 
             Image image(4, 2, Spectrum(1.0f));
             image.at(3, 1).g = bad;
             write_image(folder.file("bad.pfm"), image);
-            const std::string message = load_error(make_scene(folder, R"([{"type": "environment", "file": "bad.pfm"}])"));
+            const std::string message = testing::scene_load_error(make_scene(folder, R"([{"type": "environment", "file": "bad.pfm"}])"));
             INFO("pixel value " << bad);
             CHECK_THAT(message, Catch::Contains("bad.pfm") && Catch::Contains("pixel (3, 1)") &&
                                     Catch::Contains("negative or not finite"));
         }
     }
     SECTION("a missing environment file names the path") {
-        const std::string message = load_error(make_scene(folder, R"([{"type": "environment", "file": "nowhere.exr"}])"));
+        const std::string message = testing::scene_load_error(make_scene(folder, R"([{"type": "environment", "file": "nowhere.exr"}])"));
         CHECK_THAT(message, Catch::Contains("/lights/0/file") && Catch::Contains("nowhere.exr"));
     }
     SECTION("a spot with both look_at and direction") {
-        const std::string message = load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0],
+        const std::string message = testing::scene_load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0],
             "look_at": [0, 0, 0], "direction": [0, -1, 0]}])"));
         CHECK_THAT(message, Catch::Contains("/lights/0/direction") && Catch::Contains("not both"));
     }
     SECTION("zero directions: spot, directional, spot looking at itself, rotation axis") {
-        CHECK_THAT(load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0]}])")),
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0]}])")),
                    Catch::Contains("/lights/0/direction"));
-        CHECK_THAT(load_error(make_scene(folder, R"([{"type": "directional", "direction": [0, 0, 0]}])")),
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"([{"type": "directional", "direction": [0, 0, 0]}])")),
                    Catch::Contains("/lights/0/direction"));
-        CHECK_THAT(load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0], "look_at": [0, 1, 0]}])")),
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0], "look_at": [0, 1, 0]}])")),
                    Catch::Contains("/lights/0/look_at"));
-        CHECK_THAT(load_error(make_scene(folder, R"([{"type": "environment", "file": "sky.pfm",
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"([{"type": "environment", "file": "sky.pfm",
             "rotate": {"axis": [0, 0, 0], "degrees": 10}}])")),
                    Catch::Contains("/lights/0/rotate/axis"));
     }
     SECTION("out-of-range values and missing keys") {
-        CHECK_THAT(load_error(make_scene(folder, R"([{"type": "point", "position": [0, 1, 0], "intensity": -1}])")),
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"([{"type": "point", "position": [0, 1, 0], "intensity": -1}])")),
                    Catch::Contains("/lights/0/intensity"));
-        CHECK_THAT(load_error(make_scene(folder, R"([{"type": "point"}])")), Catch::Contains("/lights/0/position"));
-        CHECK_THAT(load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0],
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"([{"type": "point"}])")), Catch::Contains("/lights/0/position"));
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"([{"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0],
             "cone_angle_degrees": 20, "falloff_start_degrees": 30}])")),
                    Catch::Contains("/lights/0/falloff_start_degrees"));
-        CHECK_THAT(load_error(make_scene(folder, R"({"type": "point"})")), Catch::Contains("/lights") &&
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, R"({"type": "point"})")), Catch::Contains("/lights") &&
                                                                              Catch::Contains("array"));
     }
 }
@@ -184,7 +175,7 @@ TEST_CASE("a chapter-02 renderer refuses a point light: introduced in chapter 03
     register_chapter02(chapter02);
     TemporaryFolder folder;
     const std::string path = make_scene(folder, R"([{"type": "point", "position": [0, 0.5, 0]}])");
-    CHECK_THAT(load_error(path, chapter02), Catch::Contains("/lights/0/type") && Catch::Contains("introduced in chapter 03"));
+    CHECK_THAT(testing::scene_load_error(path, chapter02), Catch::Contains("/lights/0/type") && Catch::Contains("introduced in chapter 03"));
     // Without the lights array the same renderer loads the scene; its lamp is still emissive
     // (chapters 01 and 02 find it by hitting it) but no area light is made.
     const Scene scene = load_scene(make_scene(folder, ""), chapter02);

@@ -26,15 +26,6 @@ std::string make_scene(const TemporaryFolder& folder, const std::string& scene_t
 
 const std::string camera = R"("camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [8, 4]})";
 
-std::string load_error(const std::string& path, const Registry& registry = testing::full_registry()) {
-    try {
-        load_scene(path, registry);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
 }  // namespace
 
 TEST_CASE("the Cornell box loads with its published dimensions, materials and light", "[unit][scene]") {
@@ -78,39 +69,39 @@ TEST_CASE("scene errors name the file and the JSON path or line", "[unit][scene]
     TemporaryFolder folder;
     SECTION("malformed JSON gives line and column") {
         const std::string path = make_scene(folder, "{\n  \"camera\": {,\n}");
-        CHECK_THAT(load_error(path), Catch::Contains("scene.json:2:") && Catch::Contains("malformed JSON"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("scene.json:2:") && Catch::Contains("malformed JSON"));
     }
     SECTION("a missing OBJ names the JSON path and the file") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "nowhere.obj"}]})");
-        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/file") && Catch::Contains("nowhere.obj"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/meshes/0/file") && Catch::Contains("nowhere.obj"));
     }
     SECTION("an unknown material type names the path and the chapter introducing it") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
             "materials": {"paint": {"type": "roughconductor"}}})");
         Registry chapter01("ch01", 1);
         register_chapter01(chapter01);
-        CHECK_THAT(load_error(path, chapter01), Catch::Contains("/materials/paint/type") && Catch::Contains("chapter 02"));
+        CHECK_THAT(testing::scene_load_error(path, chapter01), Catch::Contains("/materials/paint/type") && Catch::Contains("chapter 02"));
         const std::string path2 = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
             "materials": {"paint": {"type": "velvet"}}})");
-        CHECK_THAT(load_error(path2), Catch::Contains("unknown material 'velvet'"));
+        CHECK_THAT(testing::scene_load_error(path2), Catch::Contains("unknown material 'velvet'"));
     }
     SECTION("wrong types and out-of-range values name the path") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
             "materials": {"paint": {"albedo": "red"}}})");
-        CHECK_THAT(load_error(path), Catch::Contains("/materials/paint/albedo") && Catch::Contains("expected"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/materials/paint/albedo") && Catch::Contains("expected"));
         const std::string path2 = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj"}],
             "materials": {"paint": {"albedo": [0.5, 1.5, 0.5]}}})");
-        CHECK_THAT(load_error(path2), Catch::Contains("/materials/paint/albedo") && Catch::Contains("outside"));
+        CHECK_THAT(testing::scene_load_error(path2), Catch::Contains("/materials/paint/albedo") && Catch::Contains("outside"));
     }
     SECTION("a missing camera, and a camera looking at itself") {
         const std::string path = make_scene(folder, R"({"meshes": [{"file": "tri.obj"}]})");
-        CHECK_THAT(load_error(path), Catch::Contains("/camera"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/camera"));
         const std::string path2 = make_scene(folder, R"({"camera": {"position": [1, 1, 1], "look_at": [1, 1, 1], "fov_vertical_degrees": 40}, "meshes": [{"file": "tri.obj"}]})");
-        CHECK_THAT(load_error(path2), Catch::Contains("/camera/look_at"));
+        CHECK_THAT(testing::scene_load_error(path2), Catch::Contains("/camera/look_at"));
     }
     SECTION("an absurd resolution is refused before anything is allocated") {
         const std::string path = make_scene(folder, R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [100000, 100000]}, "meshes": [{"file": "tri.obj"}]})");
-        CHECK_THAT(load_error(path), Catch::Contains("/camera/resolution"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/camera/resolution"));
     }
 }
 
@@ -161,7 +152,7 @@ TEST_CASE("a wrong JSON type at any level names its path", "[unit][scene]") {
     };
     for (const auto& [text, where] : cases) {
         INFO(text);
-        CHECK_THAT(load_error(make_scene(folder, text)), Catch::Contains(where) && Catch::Contains("scene.json"));
+        CHECK_THAT(testing::scene_load_error(make_scene(folder, text)), Catch::Contains(where) && Catch::Contains("scene.json"));
     }
 }
 
@@ -170,31 +161,31 @@ TEST_CASE("numbers beyond single precision and impossible frames are refused wit
     const std::string mesh = R"(, "meshes": [{"file": "tri.obj"}]})";
     SECTION("a number beyond double precision is malformed JSON at its line and column") {
         const std::string path = make_scene(folder, "{\n  \"camera\": {\"position\": [0, 0, 1e400]," + mesh);
-        CHECK_THAT(load_error(path), Catch::Contains("scene.json:2:33") && Catch::Contains("1e400"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("scene.json:2:33") && Catch::Contains("1e400"));
     }
     SECTION("a camera whose view direction overflows") {
         const std::string path = make_scene(folder, R"({"camera": {"position": [3e38, 0, 0], "look_at": [-3e38, 0, 0], "fov_vertical_degrees": 40})" + mesh);
-        CHECK_THAT(load_error(path), Catch::Contains("/camera/look_at"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/camera/look_at"));
     }
     SECTION("a zero up vector") {
         const std::string path = make_scene(folder, R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "up": [0, 0, 0], "fov_vertical_degrees": 40})" + mesh);
-        CHECK_THAT(load_error(path), Catch::Contains("/camera/up"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/camera/up"));
     }
     SECTION("a matrix entry too large for a float") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"matrix": [1e39,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}}]})");
-        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform/matrix/0") && Catch::Contains("single precision"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/meshes/0/transform/matrix/0") && Catch::Contains("single precision"));
     }
     SECTION("a matrix together with translate") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"matrix": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "translate": [1, 2, 3]}}]})");
-        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform/translate") && Catch::Contains("matrix"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/meshes/0/transform/translate") && Catch::Contains("matrix"));
     }
     SECTION("a transform that cannot be inverted names the mesh's JSON path") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"scale": [1e30, 1e30, 1e30]}}]})");
-        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/meshes/0/transform"));
     }
     SECTION("a transform that moves the mesh beyond single precision") {
         const std::string path = make_scene(folder, "{" + camera + R"(, "meshes": [{"file": "tri.obj", "transform": {"translate": [3e38, 0, 0], "scale": [1e38, 1, 1]}}]})");
-        CHECK_THAT(load_error(path), Catch::Contains("/meshes/0/transform"));
+        CHECK_THAT(testing::scene_load_error(path), Catch::Contains("/meshes/0/transform"));
     }
 }
 
