@@ -36,4 +36,10 @@ int run_render(const RenderOptions& options, const Registry& registry);
 // `merge OUT INPUT...`: combines renders of one scene made from disjoint samples.
 int run_merge(const std::string& out, const std::vector<std::string>& inputs, bool quiet);
 
+class Scene;
+class Integrator;
+// A warning for an integrator that cannot find the scene's point, spot and directional lights
+// (no ray can hit them), or an empty string.
+std::string unreachable_lights_warning(const Scene& scene, const Integrator& integrator, const std::string& name);
+
 }  // namespace freezeray

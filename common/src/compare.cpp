@@ -2,6 +2,8 @@
 // measure each one's error as it converges.
 #include "freezeray/comparison.hpp"
 
+#include "commands.hpp"
+
 #include "freezeray/error.hpp"
 #include "freezeray/metrics.hpp"
 #include "freezeray/progress.hpp"
@@ -62,8 +64,11 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     settings.seed = request.seed;
     settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
     std::vector<std::unique_ptr<Integrator>> integrators;
-    for (const std::string& name : request.integrators)
+    for (const std::string& name : request.integrators) {
         integrators.push_back(registry.make_integrator(name, settings, "--integrators"));
+        const std::string warning = unreachable_lights_warning(scene, *integrators.back(), name);
+        if (!warning.empty() && !request.quiet) std::cerr << "warning: " << warning << "\n";
+    }
 
     Comparison comparison;
     comparison.scene = request.scene;

@@ -18,6 +18,12 @@
 
 namespace freezeray {
 
+std::string unreachable_lights_warning(const Scene& scene, const Integrator& integrator, const std::string& name) {
+    if (!scene.effects.delta_lights || integrator.samples_lights()) return "";
+    return name + " finds light only by hitting it; the scene's point, spot and directional lights cannot be hit "
+                  "and stay black (pt-nee and pt-mis sample them)";
+}
+
 namespace {
 
 // The integrator for a render that names none: the one the scene's effects call for, if this
@@ -123,10 +129,8 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     if (integrator_name.empty()) integrator_name = scene.defaults.integrator;
     if (integrator_name.empty()) integrator_name = default_integrator(scene, registry);
     const auto integrator = registry.make_integrator(integrator_name, settings, "--integrator");
-    if (scene.effects.delta_lights && !integrator->samples_lights())
-        std::cerr << "warning: " << integrator_name
-                  << " finds light only by hitting it; the scene's point, spot and directional lights cannot be hit "
-                     "and stay black (pt-nee and pt-mis sample them)\n";
+    if (const std::string w = unreachable_lights_warning(scene, *integrator, integrator_name); !w.empty())
+        std::cerr << "warning: " << w << "\n";
 
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after

@@ -98,6 +98,8 @@ echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\", \"transform\": {\"rotate\"
 expect_failure "wrong JSON type, deep" "deep-wrong-type.json" "/meshes/0/transform/rotate/axis/1" -- render "$work/deep-wrong-type.json" --out "$work/out.png"
 echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"rendr\": {} }" > "$work/unknown-key.json"
 expect_warning "unknown key" "unknown-key.json" "/rendr" "did you mean 'render'" -- render "$work/unknown-key.json" --spp 1 --quiet --out "$work/warned.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"lights\": [{\"type\": \"point\", \"position\": [0, 1, 0]}] }" > "$work/point-light.json"
+expect_failure "light of a later chapter" "point-light.json" "/lights/0/type" "introduced in chapter 03" -- render "$work/point-light.json" --out "$work/out.png"
 echo '{"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [100000, 100000]}, "meshes": [{"file": "tri.obj"}]}' > "$work/huge.json"
 expect_failure "absurd resolution in the scene" "huge.json" "/camera/resolution" -- render "$work/huge.json" --out "$work/out.png"
 
