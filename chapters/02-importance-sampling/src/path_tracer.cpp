@@ -33,11 +33,7 @@ Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& sce
         if (segments == max_depth_) break;
 
         const BSDF& bsdf = *material.bsdf(*hit, arena);
-        // Surfaces that only reflect are two-sided: seen from behind, the shading frame is
-        // turned to face the viewer. Transmissive ones need the true side (inside or outside).
-        Vec3 normal = hit->shading_normal;
-        if (!has_flag(bsdf.flags(), BSDF_Transmission) && glm::dot(normal, wo_world) < 0.0f) normal = -normal;
-        const Frame frame(normal);
+        const Frame frame = shading_frame(*hit, bsdf, wo_world);  // two-sided unless it transmits
         const Vec2 u(random.next_float(), random.next_float());
         const std::optional<BSDFSample> sample = bsdf.sample(frame.to_local(wo_world), u, random.next_float());
         if (!sample || sample->pdf <= 0.0f) break;

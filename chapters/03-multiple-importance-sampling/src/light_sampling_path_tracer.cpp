@@ -95,9 +95,7 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
         if (segments == settings_.max_depth) break;
 
         const BSDF& bsdf = *material.bsdf(*hit, arena);
-        Vec3 normal = hit->shading_normal;  // two-sided reflectors face the viewer (as in chapter 02)
-        if (!has_flag(bsdf.flags(), BSDF_Transmission) && glm::dot(normal, wo_world) < 0.0f) normal = -normal;
-        const Frame frame(normal);
+        const Frame frame = shading_frame(*hit, bsdf, wo_world);  // two-sided unless it transmits
         const Vec3 wo = frame.to_local(wo_world);
 
         // Next-event estimation: a light sample at every vertex with a non-delta lobe.

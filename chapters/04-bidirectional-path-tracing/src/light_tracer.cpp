@@ -117,9 +117,7 @@ void LightTracer::trace_light_path(const Scene& scene, const ch03::LightSampler&
         const BSDF& bsdf = *scene.material(*hit).bsdf(*hit, arena);
         const Vec3 wo_world = -ray.direction;  // back towards the light
         // Two-sided reflectors face the arriving light (chapter 02 turns them to the viewer).
-        Vec3 normal = hit->shading_normal;
-        if (!has_flag(bsdf.flags(), BSDF_Transmission) && glm::dot(normal, wo_world) < 0.0f) normal = -normal;
-        const Frame frame(normal);
+        const Frame frame = shading_frame(*hit, bsdf, wo_world);
 
         // t = 1: connect this vertex to the camera (a delta lobe cannot be connected).
         if (bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy))

@@ -33,6 +33,15 @@ public:
     std::string type;  // the registry name it was made with ("diffuse", ...)
 };
 
+// The local shading frame of a BSDF at `hit`, seen from direction `wo` (world space, pointing
+// away from the surface). Surfaces that only reflect are two-sided: seen from behind, the frame
+// is turned to face `wo`. Transmissive ones keep their true side (inside and outside differ).
+inline Frame shading_frame(const Hit& hit, const BSDF& bsdf, const Vec3& wo) {
+    Vec3 normal = hit.shading_normal;
+    if (!has_flag(bsdf.flags(), BSDF_Transmission) && glm::dot(normal, wo) < 0.0f) normal = -normal;
+    return Frame(normal);
+}
+
 // Le(x, wo) of a surface: `emission` on the front side, black behind it.
 inline Spectrum emitted_radiance(const Material& m, const Hit& hit, const Vec3& wo) {
     return glm::dot(hit.geometric_normal, wo) > 0.0f ? m.emission : Spectrum(0.0f);
