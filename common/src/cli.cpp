@@ -117,6 +117,9 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--checkpoint", render.checkpoint_seconds,
                                "write the image and OUT.state atomically every this many seconds");
     render_command->add_option("--resume", render.resume, "continue the render saved in this .state file");
+    render_command->add_option("--bdpt-strategies", render.strategy_images,
+                               "write each strategy's image, weighted and unweighted, and their grids into this folder "
+                               "(bidirectional path tracing)");
     render_command->add_flag("--quiet", render.quiet, "no progress line");
 
     std::string info_scene;

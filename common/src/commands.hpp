@@ -27,6 +27,7 @@ struct RenderOptions {
     float exposure = 0.0f;
     double checkpoint_seconds = 0.0;
     std::string resume;
+    std::string strategy_images;  // --bdpt-strategies: a folder for per-strategy images
     bool quiet = false;
 };
 

@@ -31,7 +31,7 @@ bool stop_requested(const RenderSettings& settings) {
 
 // BOOK(light-path-loop)
 RenderResult render_light_paths(const Scene& scene, const RenderSettings& settings, Progress& progress,
-                                const LightPathEstimator& estimator) {
+                                const LightPathEstimator& estimator, int extra_layers, std::vector<Image>* layers) {
     if (settings.resume)
         throw InputError("--resume", "a splatting render (light tracing) cannot be resumed: its film keeps sums of "
                                      "splats, not per-pixel samples to go on from; render more samples with another "
@@ -45,7 +45,7 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
     const bool by_error = settings.target_error > 0.0;
     const std::uint64_t sample_cap = by_time ? UINT64_MAX : settings.samples_per_pixel;
 
-    SplatFilm film(width, height);
+    SplatFilm film(width, height, extra_layers);
     // Memory is bounded by one round of at most UnitsPerRound work units: one buffer per unit,
     // holding the splats of SlotsPerWorkUnit light paths (at most max depth + 1 splats each, a
     // few on average), reused round after round. The film adds a round's buffers in unit order,
@@ -112,6 +112,10 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
     result.invalid_samples = film.invalid_splat_count();
     result.estimated_relative_mse = film.estimated_relative_mse();
     result.film = std::make_shared<const Film>(film.to_film(done));
+    if (layers != nullptr) {
+        layers->clear();
+        for (int layer = 1; layer <= extra_layers; ++layer) layers->push_back(film.layer_mean(layer));
+    }
     return result;
 }
 // END BOOK

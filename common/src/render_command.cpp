@@ -134,6 +134,23 @@ int run_render(const RenderOptions& options, const Registry& registry) {
 
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after
+    if (!options.strategy_images.empty()) {
+        if (!integrator->has_strategy_images())
+            throw InputError("--bdpt-strategies", integrator_name + " has no strategies to write apart; use bdpt or bdpt-balance");
+        // The folder is made after the render (nothing is left behind by a failed one); before
+        // it, check that it, or the folder that will hold it, takes files.
+        const std::filesystem::path folder(options.strategy_images);
+        std::error_code error;
+        if (std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
+            throw InputError("--bdpt-strategies", options.strategy_images + " is a file, not a folder");
+        std::filesystem::path probe = folder / "grid-weighted.png";
+        if (!std::filesystem::exists(folder, error)) {
+            const std::filesystem::path parent = folder.has_parent_path() ? folder.parent_path() : ".";
+            probe = parent / "strategy-images-probe.png";
+        }
+        check_image_writable(probe.string());
+        settings.strategy_images = true;
+    }
     const RenderStateInfo info{options.scene, integrator_name, settings.seed, settings.first_sample, settings.max_depth,
                                scene.camera->width(), scene.camera->height()};
     if (!options.resume.empty()) {
@@ -172,6 +189,14 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     }
 
     write_image(out, annotated_image(*result.film, info, result.seconds, result.interrupted), {options.exposure});
+    if (!result.extra_images.empty()) {
+        std::error_code error;
+        std::filesystem::create_directories(options.strategy_images, error);
+        if (error)
+            throw InputError("--bdpt-strategies", "cannot create the folder " + options.strategy_images + ": " + error.message());
+    }
+    for (const auto& [name, image] : result.extra_images)
+        write_image((std::filesystem::path(options.strategy_images) / name).string(), image, {options.exposure});
     if (result.interrupted || options.checkpoint_seconds > 0.0) write_render_state(state_path_for(out), info, *result.film);
     if (result.invalid_samples > 0)
         std::cerr << "warning: " << result.invalid_samples

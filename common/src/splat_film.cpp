@@ -3,15 +3,16 @@
 
 #include "freezeray/metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace freezeray {
 
-void SplatBuffer::add_splat(const Vec2& raster_position, const Spectrum& value) {
+void SplatBuffer::add_splat(const Vec2& raster_position, const Spectrum& value, int layer) {
     const float x = std::floor(raster_position.x), y = std::floor(raster_position.y);
     if (!(x >= 0.0f && y >= 0.0f && x < static_cast<float>(width_) && y < static_cast<float>(height_))) return;
     const auto pixel = static_cast<std::uint32_t>(static_cast<int>(y) * width_ + static_cast<int>(x));
-    splats_.push_back({pixel, half_, value});
+    splats_.push_back({pixel, half_, static_cast<std::uint16_t>(layer), value});
 }
 
 void SplatBuffer::clear() {
@@ -19,14 +20,22 @@ void SplatBuffer::clear() {
     paths_[0] = paths_[1] = 0;
 }
 
-SplatFilm::SplatFilm(int width, int height) : width_(width), height_(height) {
+SplatFilm::SplatFilm(int width, int height, int extra_layers) : width_(width), height_(height) {
     const std::size_t values = static_cast<std::size_t>(width) * height * 3;
     sums_[0].assign(values, 0.0);
     sums_[1].assign(values, 0.0);
+    layer_sums_.assign(static_cast<std::size_t>(std::max(extra_layers, 0)), std::vector<double>(values, 0.0));
 }
 
 void SplatFilm::add(const SplatBuffer& buffer) {
     for (const SplatBuffer::Splat& splat : buffer.splats()) {
+        if (splat.layer > 0) {  // an extra image: its splats are copies of ones counted in layer 0
+            if (splat.layer <= layer_sums_.size() && is_valid_radiance(splat.value)) {
+                double* sum = &layer_sums_[splat.layer - 1u][static_cast<std::size_t>(splat.pixel) * 3];
+                for (int c = 0; c < 3; ++c) sum[c] += splat.value[c];
+            }
+            continue;
+        }
         if (!is_valid_radiance(splat.value)) {
             ++invalid_splats_;
             continue;
@@ -53,6 +62,16 @@ Image SplatFilm::mean() const {
     for (std::size_t i = 0; i < image.pixel_count(); ++i)
         for (int c = 0; c < 3; ++c)
             image[i][c] = static_cast<float>((sums_[0][i * 3 + c] + sums_[1][i * 3 + c]) * scale);
+    return image;
+}
+
+Image SplatFilm::layer_mean(int layer) const {
+    Image image(width_, height_);
+    if (light_paths() == 0 || layer < 1 || layer > extra_layers()) return image;
+    const double scale = 1.0 / light_paths_per_pixel();
+    const std::vector<double>& sums = layer_sums_[static_cast<std::size_t>(layer - 1)];
+    for (std::size_t i = 0; i < image.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c) image[i][c] = static_cast<float>(sums[i * 3 + c] * scale);
     return image;
 }
 

@@ -41,7 +41,7 @@ std::optional<LightSample> TriangleLight::sample_li(const Vec3& reference, const
     if (cos_light <= 0.0f) return std::nullopt;  // the reference point is behind the emitter
     const float pdf = area_to_solid_angle_pdf(1.0f / area_, distance_squared, cos_light);
     if (!std::isfinite(pdf)) return std::nullopt;  // grazing: a direction of zero solid angle
-    return LightSample{emission_, wi, pdf, point, false};
+    return LightSample{emission_, wi, pdf, point, false, normal_};
 }
 // END BOOK
 
@@ -65,6 +65,12 @@ std::optional<LightEmissionSample> TriangleLight::sample_le(const Vec2& u_positi
     if (pdf_direction <= 0.0f) return std::nullopt;
     const Vec3 direction = Frame(normal_).to_world(local);
     return LightEmissionSample{Ray{point, direction}, normal_, emission_, 1.0f / area_, pdf_direction};
+}
+
+EmissionDensity TriangleLight::pdf_le(const Ray& ray, const Vec3& normal) const {
+    (void)normal;  // the triangle's own
+    const float cos_light = glm::dot(normal_, ray.direction);
+    return {1.0f / area_, ch02::cosine_hemisphere_pdf(cos_light)};
 }
 
 // A Lambertian emitter of radiance Le and area A sends Phi = pi A Le (one side).

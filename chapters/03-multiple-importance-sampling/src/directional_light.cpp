@@ -37,6 +37,10 @@ std::optional<LightEmissionSample> DirectionalLight::sample_le(const Vec2& u_pos
     return LightEmissionSample{ray, direction_, irradiance_, 1.0f / (Pi * scene_radius_ * scene_radius_), 1.0f};
 }
 
+EmissionDensity DirectionalLight::pdf_le(const Ray&, const Vec3&) const {
+    return {1.0f / (Pi * scene_radius_ * scene_radius_), 0.0f};
+}
+
 void DirectionalLight::preprocess(const Bounds3& scene_bounds) {
     bounding_sphere(scene_bounds, scene_center_, scene_radius_);
 }

@@ -101,6 +101,11 @@ std::optional<LightEmissionSample> EnvironmentMapLight::sample_le(const Vec2& u_
                                towards->pdf};
 }
 
+EmissionDensity EnvironmentMapLight::pdf_le(const Ray& ray, const Vec3&) const {
+    // Light travelling along ray.direction arrives from -ray.direction: sample_li's direction.
+    return {1.0f / (Pi * scene_radius_ * scene_radius_), pdf_li(scene_center_, -ray.direction)};
+}
+
 Spectrum EnvironmentMapLight::power() const {
     // Phi = pi r^2 times the integral of L over the sphere, each pixel of row y covering exactly
     // (cos theta_y - cos theta_y+1) (2 pi / width) steradians. (It used sin theta at the row's
@@ -137,6 +142,10 @@ std::optional<LightEmissionSample> ConstantEnvironmentLight::sample_le(const Vec
     const Vec3 wi = sample_uniform_sphere(u_direction);
     const Ray ray = ray_through_bounding_disk(-wi, scene_center_, scene_radius_, u_position);
     return LightEmissionSample{ray, -wi, radiance_, 1.0f / (Pi * scene_radius_ * scene_radius_), uniform_sphere_pdf()};
+}
+
+EmissionDensity ConstantEnvironmentLight::pdf_le(const Ray&, const Vec3&) const {
+    return {1.0f / (Pi * scene_radius_ * scene_radius_), uniform_sphere_pdf()};
 }
 
 Spectrum ConstantEnvironmentLight::power() const {

@@ -30,6 +30,8 @@ std::optional<LightEmissionSample> PointLight::sample_le(const Vec2&, const Vec2
     return LightEmissionSample{Ray{position_, direction}, Vec3(0.0f), intensity_, 1.0f, uniform_sphere_pdf()};
 }
 
+EmissionDensity PointLight::pdf_le(const Ray&, const Vec3&) const { return {0.0f, uniform_sphere_pdf()}; }
+
 std::unique_ptr<Light> make_point_light(const Parameters& p) {
     const Vec3 position = p.require_vec3("position");
     const Spectrum intensity = p.get_spectrum("intensity", Spectrum(1.0f));

@@ -43,6 +43,11 @@ std::optional<LightEmissionSample> SpotLight::sample_le(const Vec2&, const Vec2&
                                pdf_direction};
 }
 
+EmissionDensity SpotLight::pdf_le(const Ray& ray, const Vec3&) const {
+    const float cos_theta = glm::dot(frame_.n, ray.direction);
+    return {0.0f, cos_theta >= cos_cone_ ? 1.0f / (2.0f * Pi * (1.0f - cos_cone_)) : 0.0f};
+}
+
 Spectrum SpotLight::power() const {
     // The integral of I falloff(cos theta) over the sphere: full intensity up to the falloff start,
     // and the smoothstep averages 1/2 over the falloff band (pbrt-v4, SpotLight::Phi).

@@ -38,14 +38,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit&
 }
 // END BOOK
 
-namespace {
-
-// A conservative bound on the rounding error of a point interpolated on a triangle: the light
-// sample's origin has no Hit to carry one. Relative 2^-18, above float interpolation error
-// (about 7 ulp, pbrt-v3, section 3.9.4), so the spawned ray cannot hit its own emitter again.
 Vec3 emission_origin_error(const Vec3& point) { return glm::abs(point) * 0x1p-18f; }
-
-}  // namespace
 
 // BOOK(connect-light-to-camera)
 std::optional<CameraConnection> connect_light_to_camera(const Scene& scene, const LightEmissionSample& emission,

@@ -1,6 +1,7 @@
 // Chapter 04's registrations.
 #include "freezeray/ch04/register_chapter04.hpp"
 
+#include "freezeray/ch04/bidirectional_path_tracer.hpp"
 #include "freezeray/ch04/light_tracer.hpp"
 
 namespace freezeray {
@@ -13,6 +14,21 @@ void register_chapter04(Registry& registry) {
                                 ch04::LightTracingSettings s;
                                 s.max_depth = settings.max_depth;
                                 return std::make_unique<ch04::LightTracer>(s);
+                            });
+    registry.add_integrator("bdpt", 4,
+                            "bidirectional path tracing: camera and light subpaths joined in every way, combined by "
+                            "MIS (power heuristic)",
+                            [](const RenderSettings& settings) {
+                                ch04::BidirectionalSettings s;
+                                s.max_depth = settings.max_depth;
+                                return std::make_unique<ch04::BidirectionalPathTracer>(s);
+                            });
+    registry.add_integrator("bdpt-balance", 4, "bidirectional path tracing with the balance heuristic",
+                            [](const RenderSettings& settings) {
+                                ch04::BidirectionalSettings s;
+                                s.max_depth = settings.max_depth;
+                                s.heuristic = ch03::MisHeuristic::Balance;
+                                return std::make_unique<ch04::BidirectionalPathTracer>(s);
                             });
 }
 

@@ -13,6 +13,8 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace freezeray {
 
@@ -42,6 +44,9 @@ struct RenderSettings {
     // > 0: passes are shortened so that none takes much longer than this (checkpoints are
     // written between passes).
     double max_pass_seconds = 0.0;
+    // True to make the per-strategy images of bidirectional path tracing (`--bdpt-strategies`):
+    // RenderResult::extra_images. Only integrators with has_strategy_images() make them.
+    bool strategy_images = false;
 };
 
 struct RenderResult {
@@ -53,6 +58,9 @@ struct RenderResult {
     std::uint64_t invalid_samples = 0;    // NaN, Inf or negative samples (a bug when non-zero)
     double estimated_relative_mse = -1.0; // from `variance`; negative when not estimable
     bool interrupted = false;
+    // Extra images the integrator made besides the estimate, by file name (bidirectional path
+    // tracing's per-strategy images, RenderSettings::strategy_images); written by `render`.
+    std::vector<std::pair<std::string, Image>> extra_images;
 };
 
 class Integrator {
@@ -67,6 +75,10 @@ public:
     // False when a saved render cannot be continued exactly (`--resume`): a splatting film's
     // state is not a per-pixel count that a pass can go on from (render_light_paths).
     virtual bool resumable() const { return true; }
+
+    // True when the integrator combines several sampling strategies whose separate images it
+    // can write (RenderSettings::strategy_images; chapter 04).
+    virtual bool has_strategy_images() const { return false; }
 };
 
 // One sample of the radiance arriving along a camera ray. All randomness from `random`; scratch
@@ -89,8 +101,11 @@ using LightPathEstimator =
 // batch adds one "sample per pixel", until the sample count, the time or the target error is
 // reached. A stop request ends the render between batches. The result's film is
 // SplatFilm::to_film of the batches done. Refuses settings.resume with an InputError.
+// With extra_layers > 0, splats into layers 1 ... extra_layers are summed into extra images,
+// returned in `layers` (index 0 for layer 1) when it is not null.
 RenderResult render_light_paths(const Scene& scene, const RenderSettings& settings, Progress& progress,
-                                const LightPathEstimator& estimator);
+                                const LightPathEstimator& estimator, int extra_layers = 0,
+                                std::vector<Image>* layers = nullptr);
 
 // An integrator that estimates each pixel independently from camera paths: it only says how one
 // camera ray's radiance is estimated (li); the image loop, the film and the passes are shared.

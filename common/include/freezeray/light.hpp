@@ -34,6 +34,7 @@ struct LightSample {
     float pdf = 0.0f;
     Vec3 position;      // the sampled point on the light; unused for infinite and directional lights
     bool infinite = false;  // true when the light is at infinity (shadow ray without an end)
+    Vec3 normal{0.0f};      // the light's surface normal at `position` (area lights; zero otherwise)
 };
 
 // A ray leaving a light, for tracing paths from the lights (sample_le, chapter 04).
@@ -43,6 +44,12 @@ struct LightEmissionSample {
     Spectrum radiance;           // Le(origin, direction)
     float pdf_position = 0.0f;   // area density of the origin (1 for a delta position)
     float pdf_direction = 0.0f;  // solid-angle density of the direction (1 for a delta direction)
+};
+
+// The densities with which sample_le produces a given ray (Light::pdf_le).
+struct EmissionDensity {
+    float position = 0.0f;   // area density of the origin (0 for a delta position: no ray finds it)
+    float direction = 0.0f;  // solid-angle density of the direction (0 for a delta direction)
 };
 
 class Light {
@@ -65,6 +72,12 @@ public:
     // Samples a ray leaving the light (for light paths): u_position chooses the origin,
     // u_direction the direction.
     virtual std::optional<LightEmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction) const = 0;
+
+    // The densities with which sample_le produces `ray` leaving the light from a point whose
+    // normal is `normal` (bidirectional path tracing needs them for paths found another way,
+    // chapter 04; pbrt-v3's Pdf_Le). For lights at infinity the position density is that of the
+    // disk sample_le starts rays on, and the direction is the one light travels in.
+    virtual EmissionDensity pdf_le(const Ray& ray, const Vec3& normal) const = 0;
 
     // Total emitted power (flux, W in the renderer's units), used to choose lights in
     // proportion to the light they send into the scene.

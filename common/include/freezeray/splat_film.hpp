@@ -25,7 +25,8 @@ class SplatBuffer {
 public:
     struct Splat {
         std::uint32_t pixel;  // y * width + x
-        std::uint32_t half;   // which half-buffer (the light path's index, even or odd)
+        std::uint16_t half;   // which half-buffer (the light path's index, even or odd)
+        std::uint16_t layer;  // 0: the image; 1...: extra images (bidirectional strategy images)
         Spectrum value;
     };
 
@@ -34,12 +35,15 @@ public:
     // Starts light path number `path_index` (the splats that follow are its own): its parity
     // chooses the half-buffer used for the error estimate.
     void begin_light_path(std::uint64_t path_index) {
-        half_ = static_cast<std::uint32_t>(path_index & 1u);
+        half_ = static_cast<std::uint16_t>(path_index & 1u);
         ++paths_[half_];
     }
     // Adds `value` to the pixel containing film position raster_position (pixels, as
     // PinholeCamera::generate_ray). Positions outside the film are ignored.
-    void add_splat(const Vec2& raster_position, const Spectrum& value);
+    void add_splat(const Vec2& raster_position, const Spectrum& value) { add_splat(raster_position, value, 0); }
+    // The same into extra image `layer` (>= 1) of a film made with that many extra layers; such
+    // splats do not count in the image or its error estimate.
+    void add_splat(const Vec2& raster_position, const Spectrum& value, int layer);
     void clear();
 
     const std::vector<Splat>& splats() const { return splats_; }
@@ -47,7 +51,7 @@ public:
 
 private:
     int width_, height_;
-    std::uint32_t half_ = 0;
+    std::uint16_t half_ = 0;
     std::uint64_t paths_[2] = {0, 0};
     std::vector<Splat> splats_;
 };
@@ -63,9 +67,11 @@ private:
 // from the two half-images I_even and I_odd, independent estimates from n_even and n_odd paths:
 // Var[I] is estimated by (I_even - I_odd)^2 n_even n_odd / n^2 (1 / 4 for equal halves), unbiased
 // per pixel with one degree of freedom: noisy for one pixel, good averaged over an image.
+// Extra layers (for bidirectional path tracing's per-strategy images) are plain sums, normalised
+// in the same way, without error estimates.
 class SplatFilm {
 public:
-    SplatFilm(int width, int height);
+    SplatFilm(int width, int height, int extra_layers = 0);
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -82,6 +88,9 @@ public:
 
     // The image: sum of splats / light paths per pixel.
     Image mean() const;
+    // Extra layer `layer` (1 ... extra_layers), normalised as mean().
+    Image layer_mean(int layer) const;
+    int extra_layers() const { return static_cast<int>(layer_sums_.size()); }
     // The per-pixel variance of mean(), from the half-buffers (empty-black before both have paths).
     Image variance_of_mean() const;
     // Estimated relMSE of mean(), as Film::estimated_relative_mse but from variance_of_mean();
@@ -97,6 +106,7 @@ private:
 
     int width_, height_;
     std::vector<double> sums_[2];  // per half, per pixel, 3 channels
+    std::vector<std::vector<double>> layer_sums_;  // per extra layer, per pixel, 3 channels
     std::uint64_t paths_[2] = {0, 0};
     std::uint64_t invalid_splats_ = 0;
 };

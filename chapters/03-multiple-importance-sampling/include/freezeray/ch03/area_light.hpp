@@ -19,6 +19,7 @@ public:
     std::optional<LightSample> sample_li(const Vec3& reference, const Vec2& u) const override;
     float pdf_li(const Vec3& reference, const Vec3& wi) const override;
     std::optional<LightEmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction) const override;
+    EmissionDensity pdf_le(const Ray& ray, const Vec3& normal) const override;
     Spectrum power() const override;
 
     float area() const { return area_; }

@@ -33,6 +33,7 @@ public:
     float pdf_li(const Vec3& reference, const Vec3& wi) const override;
     Spectrum le(const Vec3& direction) const override;
     std::optional<LightEmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction) const override;
+    EmissionDensity pdf_le(const Ray& ray, const Vec3& normal) const override;
     Spectrum power() const override;
     void preprocess(const Bounds3& scene_bounds) override;
 
@@ -58,6 +59,7 @@ public:
     float pdf_li(const Vec3& reference, const Vec3& wi) const override;
     Spectrum le(const Vec3&) const override { return radiance_; }
     std::optional<LightEmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction) const override;
+    EmissionDensity pdf_le(const Ray& ray, const Vec3& normal) const override;
     Spectrum power() const override;
     void preprocess(const Bounds3& scene_bounds) override;
 

@@ -18,6 +18,7 @@ public:
     std::optional<LightSample> sample_li(const Vec3& reference, const Vec2& u) const override;
     float pdf_li(const Vec3&, const Vec3&) const override { return 0.0f; }
     std::optional<LightEmissionSample> sample_le(const Vec2& u_position, const Vec2& u_direction) const override;
+    EmissionDensity pdf_le(const Ray& ray, const Vec3& normal) const override;
     Spectrum power() const override { return 4.0f * Pi * intensity_; }
 
 private:

@@ -28,6 +28,11 @@ struct CameraConnection {
 // geometric surface.
 float shading_normal_correction(const Vec3& wo, const Vec3& wi, const Vec3& shading_normal, const Vec3& geometric_normal);
 
+// A conservative bound on the rounding error of a point interpolated on a triangle: a light
+// sample's origin has no Hit to carry one. Relative 2^-18, above float interpolation error
+// (about 7 ulp, pbrt-v3, section 3.9.4), so a ray spawned there cannot hit its own emitter.
+Vec3 emission_origin_error(const Vec3& point);
+
 // Connects a light-path vertex on a surface to the camera (the t = 1 strategy): `beta` is the
 // light path's throughput up to the vertex (Le cos / pdfs, times BSDF weights), wo_world the
 // unit direction from the vertex back along the path towards the light, frame the vertex's

@@ -1,0 +1,46 @@
+// Bidirectional path tracing (`bdpt`): a camera subpath and a light subpath per sample, joined
+// in every possible way (s light vertices, t camera vertices), each way weighted by multiple
+// importance sampling against all the others (Veach and Guibas 1995; Veach 1997, chapter 10;
+// pbrt-v3, section 16.3).
+#pragma once
+
+#include "freezeray/integrator.hpp"
+#include "freezeray/ch03/mis.hpp"
+#include "freezeray/ch04/path_vertex.hpp"
+
+namespace freezeray::ch04 {
+
+// What strategy (s, t) contributes for one pair of subpaths.
+struct StrategyContribution {
+    Spectrum unweighted{0.0f};  // the strategy's own estimate of the path's contribution
+    float weight = 0.0f;        // its MIS weight
+    bool at_raster = false;     // t = 1: lands at raster_position, not at the camera ray's pixel
+    Vec2 raster_position{0.0f};
+};
+
+// Joins the first s vertices of the light subpath and the first t of the camera subpath
+// (Veach 1997, section 10.2): s = 0 uses emission found by the camera subpath, s = 1 samples a
+// point on a light, t = 1 connects to the camera (through its importance), others connect the
+// two end vertices deterministically. Uses random numbers only for s = 1.
+StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+                                      const PathVertex* light, int s, const PathVertex* camera, int t, PCG32& random);
+
+struct BidirectionalSettings {
+    int max_depth = 0;  // segments of a whole path; 0: chapter 02's default
+    ch03::MisHeuristic heuristic = ch03::MisHeuristic::Power;
+};
+
+class BidirectionalPathTracer final : public Integrator {
+public:
+    explicit BidirectionalPathTracer(const BidirectionalSettings& settings);
+
+    RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
+    bool samples_lights() const override { return true; }
+    bool resumable() const override { return false; }
+    bool has_strategy_images() const override { return true; }
+
+private:
+    BidirectionalSettings settings_;
+};
+
+}  // namespace freezeray::ch04

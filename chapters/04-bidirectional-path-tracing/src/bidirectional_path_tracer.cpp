@@ -1,0 +1,140 @@
+// Bidirectional path tracing (book chapter 04; Veach 1997, chapter 10; pbrt-v3, section 16.3).
+#include "freezeray/ch04/bidirectional_path_tracer.hpp"
+
+#include "freezeray/ch02/path_tracer.hpp"
+#include "freezeray/ch04/bdpt_mis_weight.hpp"
+#include "freezeray/ch04/strategy_images.hpp"
+#include "freezeray/ch04/subpaths.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace freezeray::ch04 {
+
+// BOOK(connect-strategy)
+StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+                                      const PathVertex* light, int s, const PathVertex* camera, int t, PCG32& random) {
+    StrategyContribution result;
+    // A camera subpath that escaped ends on the environment: only s = 0 can use that vertex.
+    if (t > 1 && s != 0 && camera[t - 1].type == VertexType::Light) return result;
+
+    PathVertex sampled;  // the vertex an s = 1 or t = 1 strategy samples at the connection
+    const PathVertex* sampled_vertex = nullptr;
+    Spectrum L(0.0f);
+    if (s == 0) {
+        // The camera subpath found emission by itself.
+        const PathVertex& pt = camera[t - 1];
+        if (pt.is_light()) L = pt.beta * vertex_le(scene, pt, camera[t - 2]);
+    } else if (t == 1) {
+        // Connect the light subpath to the camera (light tracing), landing at another pixel.
+        const PathVertex& qs = light[s - 1];
+        if (!qs.connectible()) return result;
+        if (s == 1 && qs.light->type() != LightType::Area) return result;  // see the chapter's README
+        const std::optional<CameraImportanceSample> camera_sample = scene.camera->sample_wi(qs.position);
+        if (!camera_sample || camera_sample->pdf <= 0.0f || camera_sample->importance <= 0.0f) return result;
+        sampled.type = VertexType::Camera;
+        sampled.position = scene.camera->position();
+        sampled.beta = Spectrum(camera_sample->importance / camera_sample->pdf);
+        if (s == 1) {
+            // The light seen directly: a one-sided Lambertian emitter sends Le towards the camera.
+            const float cos_light = glm::dot(qs.geometric_normal, camera_sample->wi);
+            if (cos_light <= 0.0f) return result;
+            L = qs.beta * sampled.beta * cos_light;
+        } else {
+            L = qs.beta * vertex_f(qs, sampled) * sampled.beta * std::abs(glm::dot(camera_sample->wi, qs.frame.n));
+        }
+        if (is_black(L) || !mutually_visible(scene, qs, sampled)) return result;
+        result.at_raster = true;
+        result.raster_position = camera_sample->raster_position;
+        sampled_vertex = &sampled;
+    } else if (s == 1) {
+        // Sample a point on a light (chapter 03's next-event estimation) for the camera subpath.
+        const PathVertex& pt = camera[t - 1];
+        const float u_select = random.next_float();
+        const Vec2 u_light(random.next_float(), random.next_float());
+        if (!pt.connectible()) return result;
+        const std::optional<ch03::LightSampler::Choice> choice = lights.sample(u_select);
+        if (!choice || choice->probability <= 0.0f) return result;
+        const std::optional<LightSample> light_sample = choice->light->sample_li(pt.position, u_light);
+        if (!light_sample || light_sample->pdf <= 0.0f || is_black(light_sample->radiance)) return result;
+        const LightType type = choice->light->type();
+        sampled.type = VertexType::Light;
+        sampled.transport = Transport::Importance;
+        sampled.light = choice->light;
+        sampled.infinite = type == LightType::Infinite || type == LightType::DeltaDirection;
+        sampled.position = sampled.infinite ? pt.position + light_sample->wi : light_sample->position;
+        sampled.geometric_normal = light_sample->normal;
+        sampled.beta = light_sample->radiance / (choice->probability * light_sample->pdf);
+        sampled.pdf_fwd = light_origin_pdf(lights, sampled, pt);
+        L = pt.beta * vertex_f(pt, sampled) * sampled.beta * std::abs(glm::dot(light_sample->wi, pt.frame.n));
+        if (is_black(L) || !mutually_visible(scene, pt, sampled)) return result;
+        sampled_vertex = &sampled;
+    } else {
+        // Join the two end vertices with a deterministic segment.
+        const PathVertex& qs = light[s - 1];
+        const PathVertex& pt = camera[t - 1];
+        if (!qs.connectible() || !pt.connectible()) return result;
+        L = qs.beta * vertex_f(qs, pt) * vertex_f(pt, qs) * pt.beta;
+        if (is_black(L)) return result;
+        L *= geometry_term(scene, qs, pt);
+    }
+    if (is_black(L)) return result;
+    result.unweighted = L;
+    result.weight = bdpt_mis_weight(scene, lights, heuristic, light, s, camera, t, sampled_vertex);
+    return result;
+}
+// END BOOK
+
+BidirectionalPathTracer::BidirectionalPathTracer(const BidirectionalSettings& settings) : settings_(settings) {
+    if (settings_.max_depth <= 0) settings_.max_depth = ch02::DefaultMaxDepth;
+}
+
+// BOOK(bdpt-render)
+RenderResult BidirectionalPathTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
+    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const int max_depth = settings_.max_depth;
+    const PinholeCamera& pinhole = *scene.camera;
+    const StrategyLayers layers(max_depth);
+    const bool strategy_images = settings.strategy_images;
+
+    const LightPathEstimator estimator = [&](std::uint32_t slot, PCG32& random, ScratchArena& arena,
+                                             SplatBuffer& splats) {
+        // A path of max_depth segments has max_depth + 1 vertices: all of them on the camera
+        // side for s = 0, all but the pinhole on the light side for t = 1.
+        thread_local std::vector<PathVertex> camera_path, light_path;
+        camera_path.resize(static_cast<std::size_t>(max_depth) + 1);
+        light_path.resize(static_cast<std::size_t>(max_depth));
+
+        const int x = static_cast<int>(slot % static_cast<std::uint32_t>(pinhole.width()));
+        const int y = static_cast<int>(slot / static_cast<std::uint32_t>(pinhole.width()));
+        const Vec2 film(static_cast<float>(x) + random.next_float(), static_cast<float>(y) + random.next_float());
+        const int camera_count =
+            camera_subpath(scene, pinhole.generate_ray(film), random, arena, max_depth + 1, camera_path.data());
+        const int light_count = light_subpath(scene, lights, random, arena, max_depth, light_path.data());
+
+        // Every strategy (s, t) of every length: t >= 1 (a pinhole cannot be hit), s + t >= 2.
+        for (int t = 1; t <= camera_count; ++t)
+            for (int s = 0; s <= light_count; ++s) {
+                const int segments = s + t - 1;
+                if (segments < 1 || segments > max_depth) continue;
+                const StrategyContribution c = connect_strategy(scene, lights, settings_.heuristic, light_path.data(),
+                                                                s, camera_path.data(), t, random);
+                if (is_black(c.unweighted)) continue;
+                const Vec2 where = c.at_raster ? c.raster_position : film;
+                const Spectrum weighted = c.unweighted * c.weight;
+                if (c.weight > 0.0f) splats.add_splat(where, weighted);
+                if (strategy_images) {
+                    if (c.weight > 0.0f) splats.add_splat(where, weighted, layers.weighted_layer(s, t));
+                    if (layers.has_image(s, t)) splats.add_splat(where, c.unweighted, layers.unweighted_layer(s, t));
+                }
+            }
+    };
+    std::vector<Image> layer_images;
+    RenderResult result = render_light_paths(scene, settings, progress, estimator,
+                                             strategy_images ? layers.layer_count() : 0, &layer_images);
+    if (strategy_images) result.extra_images = layers.named_images(layer_images);
+    return result;
+}
+// END BOOK
+
+}  // namespace freezeray::ch04
