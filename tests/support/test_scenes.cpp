@@ -65,6 +65,7 @@ RenderResult render(const TestRender& request) {
     settings.seed = request.seed;
     settings.threads = request.threads;
     settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
+    settings.strategy_images = request.strategy_images;
     const auto integrator = full_registry().make_integrator(request.integrator, settings, "test");
     Progress quiet(true);
     return integrator->render(scene, settings, quiet);

@@ -35,6 +35,7 @@ struct TestRender {
     int width = 0;                 // 0: the scene's
     int height = 0;
     int max_depth = 0;             // 0: the scene's, else the integrator's default
+    bool strategy_images = false;  // RenderSettings::strategy_images (bdpt)
 };
 
 // Loads and renders, quietly.
