@@ -144,8 +144,10 @@ int run_render(const RenderOptions& options, const Registry& registry) {
         if (std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
             throw InputError("--bdpt-strategies", options.strategy_images + " is a file, not a folder");
         std::filesystem::path probe = folder / "grid-weighted.png";
-        if (!std::filesystem::exists(folder, error)) {
-            const std::filesystem::path parent = folder.has_parent_path() ? folder.parent_path() : ".";
+        if (!std::filesystem::exists(folder, error)) {  // the nearest folder that exists will hold it
+            std::filesystem::path parent = folder;
+            do parent = parent.has_parent_path() ? parent.parent_path() : std::filesystem::path(".");
+            while (!std::filesystem::exists(parent, error) && parent != ".");
             probe = parent / "strategy-images-probe.png";
         }
         check_image_writable(probe.string());
