@@ -25,16 +25,22 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit&
     const std::optional<CameraImportanceSample> camera = scene.camera->sample_wi(hit.position);
     if (!camera || camera->pdf <= 0.0f || camera->importance <= 0.0f) return std::nullopt;
     // The light arrives from wo_world and leaves towards the camera: in the radiance convention
-    // of chapter 02's BSDFs that is f(wo = towards the camera, wi = towards the light).
+    // of chapter 02's BSDFs that is f(wo = towards the camera, wi = towards the light). That is
+    // the path's own BSDF factor, so no eta^2 is needed here even for refraction: the adjoint
+    // BSDF f*(a, b) = f(b, a) is what a light path uses (Veach 1997, section 5.2), and only a
+    // BSDF *sampled* from the light's side, f(a, b), needs turning into f(b, a) (the eta^2 of
+    // trace_light_path).
     const Vec3 to_camera = frame.to_local(camera->wi);
     const Spectrum f = bsdf.eval(to_camera, frame.to_local(wo_world));
     if (is_black(f)) return std::nullopt;
     if (scene.occluded(hit.spawn_ray_to(scene.camera->position()))) return std::nullopt;
     const float correction = shading_normal_correction(wo_world, camera->wi, frame.n, hit.geometric_normal);
+    // EXERCISE(ch04/camera-connection): return the connection: beta times f times |cos theta| at the vertex times the shading-normal correction times We / pdf, at the camera sample's raster position
     // beta f |cos theta| We / pdf: pdf = distance^2 / cos(theta_camera) turns the pinhole's
     // importance into the importance arriving here (pbrt-v3, section 16.3.1, eq. 16.17).
     const Spectrum value = beta * f * (abs_cos_theta(to_camera) * correction * camera->importance / camera->pdf);
     return CameraConnection{camera->raster_position, value};
+    // END EXERCISE
 }
 // END BOOK
 
