@@ -24,6 +24,8 @@ gives the answer away. Nested BOOK regions are allowed; their marker lines are l
 Figures. book/figures.json lists {"output": ..., "command": [...]} entries. Each command
 runs from the repository root; its first word is an executable of the build
 (BUILD_DIR/NAME or BUILD_DIR/chapters/NAME) and "{output}" stands for the output path.
+An entry may add "copy_from": a file the command writes (under out/, say, beside files
+too large to commit) that is then copied to the output.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ import difflib
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -336,6 +339,7 @@ class Figure:
     output: str
     command: list[str]
     description: str = ""
+    copy_from: str = ""
 
 
 def load_figures(root: Path) -> list[Figure]:
@@ -352,8 +356,12 @@ def load_figures(root: Path) -> list[Figure]:
     figures, problems = [], []
     for index, entry in enumerate(entries):
         where = f"{FIGURES_FILE}: entry {index}"
-        if not isinstance(entry, dict) or set(entry) - {"output", "command", "description"}:
-            problems.append(f"{where}: expected only the keys output, command and description")
+        if not isinstance(entry, dict) or set(entry) - {"output", "command", "description", "copy_from"}:
+            problems.append(f"{where}: expected only the keys output, command, description and copy_from")
+            continue
+        copy_from = entry.get("copy_from", "")
+        if not isinstance(copy_from, str) or Path(copy_from).is_absolute():
+            problems.append(f"{where}: copy_from must be a path relative to the repository root")
             continue
         output, command = entry.get("output"), entry.get("command")
         if not isinstance(output, str) or not output or Path(output).is_absolute():
@@ -361,7 +369,7 @@ def load_figures(root: Path) -> list[Figure]:
         elif not (isinstance(command, list) and command and all(isinstance(word, str) for word in command)):
             problems.append(f"{where} ({output}): command must be a non-empty list of strings")
         else:
-            figures.append(Figure(output, command, entry.get("description", "")))
+            figures.append(Figure(output, command, entry.get("description", ""), copy_from))
     if problems:
         raise BookError(problems)
     return figures
@@ -390,6 +398,10 @@ def render_figure(root: Path, build_dir: Path, figure: Figure, dry_run: bool) ->
     result = subprocess.run(command, cwd=root)
     if result.returncode != 0:
         return f"{figure.output}: the command failed with exit status {result.returncode}"
+    if figure.copy_from:
+        if not (root / figure.copy_from).is_file():
+            return f"{figure.output}: the command succeeded but wrote no {figure.copy_from} to copy"
+        shutil.copyfile(root / figure.copy_from, root / figure.output)
     if not (root / figure.output).is_file():
         return f"{figure.output}: the command succeeded but wrote no {figure.output}"
     size = (root / figure.output).stat().st_size

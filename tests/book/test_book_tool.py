@@ -197,6 +197,18 @@ class BookTool(unittest.TestCase):
         self.assertEqual((self.root / "book/figures/a.png").read_text(),
                          "image render s.json --out book/figures/a.png")
 
+    def test_a_figure_copied_from_a_file_its_command_writes(self):
+        renderer = self.write("build/chapters/ch01", FAKE_RENDERER)
+        renderer.chmod(0o755)
+        self.write("book/figures.json", json.dumps([
+            {"output": "book/figures/b.png", "command": ["ch01", "render", "--out", "out/big/b.png"],
+             "copy_from": "out/big/b.png"},
+        ]))
+        (self.root / "out/big").mkdir(parents=True)
+        status, output, _ = self.run_tool("figures", "--build-dir", str(self.root / "build"))
+        self.assertEqual(status, 0, output)
+        self.assertEqual((self.root / "book/figures/b.png").read_text(), "image render --out out/big/b.png")
+
     def test_figures_with_a_missing_renderer(self):
         (self.root / "build").mkdir()
         self.write("book/figures.json", json.dumps([{"output": "book/figures/a.png", "command": ["ch09"]}]))
