@@ -120,6 +120,12 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--bdpt-strategies", render.strategy_images,
                                "write each strategy's image, weighted and unweighted, and their grids into this folder "
                                "(bidirectional path tracing)");
+    render_command->add_option("--mlt-large-step", render.mlt_large_step,
+                               "mlt: the probability of a large step (default 0.3)");
+    render_command->add_option("--mlt-sigma", render.mlt_sigma,
+                               "mlt: the standard deviation of a small step in primary sample space (default 0.01)");
+    render_command->add_option("--mlt-bootstrap", render.mlt_bootstrap, "mlt: the number of bootstrap paths (default 100000)");
+    render_command->add_option("--mlt-chains", render.mlt_chains, "mlt: the number of Markov chains (default 1000)");
     render_command->add_flag("--quiet", render.quiet, "no progress line");
 
     std::string info_scene;

@@ -28,6 +28,10 @@ struct RenderOptions {
     double checkpoint_seconds = 0.0;
     std::string resume;
     std::string strategy_images;  // --bdpt-strategies: a folder for per-strategy images
+    double mlt_large_step = 0.0;  // --mlt-large-step (0: the integrator's default)
+    double mlt_sigma = 0.0;       // --mlt-sigma
+    long long mlt_bootstrap = 0;  // --mlt-bootstrap
+    int mlt_chains = 0;           // --mlt-chains
     bool quiet = false;
 };
 

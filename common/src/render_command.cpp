@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -76,6 +77,13 @@ void check_render_options(const RenderOptions& o) {
     if (o.seed < -1) throw InputError("--seed", "must not be negative");
     if (o.sample_offset < 0) throw InputError("--sample-offset", "must not be negative");
     if (o.checkpoint_seconds < 0.0) throw InputError("--checkpoint", "must be positive (seconds between checkpoints)");
+    if (o.mlt_large_step < 0.0 || o.mlt_large_step > 1.0 || !std::isfinite(o.mlt_large_step))
+        throw InputError("--mlt-large-step", "must be a probability in (0, 1]");
+    if (o.mlt_sigma < 0.0 || o.mlt_sigma > 1.0 || !std::isfinite(o.mlt_sigma))
+        throw InputError("--mlt-sigma", "must be in (0, 1] (a step in primary sample space, whose side is 1)");
+    if (o.mlt_bootstrap < 0 || o.mlt_bootstrap > (1LL << 32))
+        throw InputError("--mlt-bootstrap", "must be between 1 and 2^32");
+    if (o.mlt_chains < 0 || o.mlt_chains > (1 << 20)) throw InputError("--mlt-chains", "must be between 1 and 2^20");
 }
 
 std::string default_output_path(const std::string& scene_path, const std::string& integrator) {
@@ -124,6 +132,10 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     settings.seed = options.seed >= 0 ? static_cast<std::uint64_t>(options.seed) : scene.defaults.seed;
     settings.first_sample = static_cast<std::uint64_t>(options.sample_offset);
     settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.defaults.max_depth;
+    settings.mlt_large_step_probability = options.mlt_large_step;
+    settings.mlt_sigma = options.mlt_sigma;
+    settings.mlt_bootstrap_samples = static_cast<std::uint64_t>(options.mlt_bootstrap);
+    settings.mlt_chains = options.mlt_chains;
 
     std::string integrator_name = options.integrator;
     if (integrator_name.empty()) integrator_name = scene.defaults.integrator;
@@ -200,6 +212,9 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     for (const auto& [name, image] : result.extra_images)
         write_image((std::filesystem::path(options.strategy_images) / name).string(), image, {options.exposure});
     if (result.interrupted || options.checkpoint_seconds > 0.0) write_render_state(state_path_for(out), info, *result.film);
+    for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
+    if (!options.quiet)
+        for (const std::string& n : result.notes) std::cerr << n << "\n";
     if (result.invalid_samples > 0)
         std::cerr << "warning: " << result.invalid_samples
                   << " samples were NaN, infinite or negative and were counted as zero; this is a bug in the "

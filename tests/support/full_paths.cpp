@@ -86,6 +86,7 @@ bool densities_usable(const FullPath& path) {
 int for_paths_ending_on_emitters(const Scene& scene, const ch03::LightSampler& lights, int wanted, std::uint64_t seed,
                                  const std::function<void(const FullPath&)>& check) {
     PCG32 random(seed, 7);
+    IndependentSamples samples(random);
     ScratchArena arena;
     int checked = 0;
     std::vector<PathVertex> vertices(8);
@@ -93,7 +94,7 @@ int for_paths_ending_on_emitters(const Scene& scene, const ch03::LightSampler& l
         arena.reset();
         const int n = 3 + attempt % 4;
         const Vec2 film(random.next_float() * scene.camera->width(), random.next_float() * scene.camera->height());
-        const int count = camera_subpath(scene, scene.camera->generate_ray(film), random, arena, n, vertices.data());
+        const int count = camera_subpath(scene, scene.camera->generate_ray(film), samples, arena, n, vertices.data());
         if (count != n || !vertices[n - 1].is_light()) continue;
         std::vector<PathVertex> x(vertices.begin(), vertices.begin() + n);
         PathVertex light_end = x[n - 1];

@@ -5,6 +5,7 @@
 #include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/ch03/register_chapter03.hpp"
 #include "freezeray/ch04/register_chapter04.hpp"
+#include "freezeray/ch05/register_chapter05.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/progress.hpp"
 
@@ -36,11 +37,12 @@ std::optional<std::string> shared_scenes_folder() {
 
 const Registry& full_registry() {
     static const Registry registry = [] {
-        Registry r("freezeray", 4);
+        Registry r("freezeray", 5);
         register_chapter01(r);
         register_chapter02(r);
         register_chapter03(r);
         register_chapter04(r);
+        register_chapter05(r);
         return r;
     }();
     return registry;

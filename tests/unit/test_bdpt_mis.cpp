@@ -67,6 +67,7 @@ Checked check_paths_ending_on_delta_lights(const std::string& scene_file, int wa
     const Scene scene = load_scene(testing::scene_path(scene_file), testing::full_registry());
     const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
     PCG32 random(seed, 11);
+    IndependentSamples samples(random);
     ScratchArena arena;
     Checked checked;
     std::vector<PathVertex> vertices(8);
@@ -74,7 +75,7 @@ Checked check_paths_ending_on_delta_lights(const std::string& scene_file, int wa
         arena.reset();
         const int n = 3 + attempt % 4;
         const Vec2 film(random.next_float() * scene.camera->width(), random.next_float() * scene.camera->height());
-        const int count = camera_subpath(scene, scene.camera->generate_ray(film), random, arena, n - 1, vertices.data());
+        const int count = camera_subpath(scene, scene.camera->generate_ray(film), samples, arena, n - 1, vertices.data());
         const auto choice = lights.sample(random.next_float());
         if (count != n - 1 || !choice || !is_delta_light(choice->light->type())) continue;
         const PathVertex& last = vertices[n - 2];

@@ -13,7 +13,8 @@ namespace freezeray::ch04 {
 
 // BOOK(connect-strategy)
 StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
-                                      const PathVertex* light, int s, const PathVertex* camera, int t, PCG32& random) {
+                                      const PathVertex* light, int s, const PathVertex* camera, int t,
+                                      SampleStream& samples) {
     StrategyContribution result;
     // A camera subpath that escaped ends on the environment: only s = 0 can use that vertex.
     if (t > 1 && s != 0 && camera[t - 1].type == VertexType::Light) return result;
@@ -50,8 +51,8 @@ StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampl
     } else if (s == 1) {
         // Sample a point on a light (chapter 03's next-event estimation) for the camera subpath.
         const PathVertex& pt = camera[t - 1];
-        const float u_select = random.next_float();
-        const Vec2 u_light(random.next_float(), random.next_float());
+        const float u_select = samples.next_float();
+        const Vec2 u_light(samples.next_float(), samples.next_float());
         if (!pt.connectible()) return result;
         const std::optional<ch03::LightSampler::Choice> choice = lights.sample(u_select);
         if (!choice || choice->probability <= 0.0f) return result;
@@ -89,45 +90,57 @@ BidirectionalPathTracer::BidirectionalPathTracer(const BidirectionalSettings& se
     if (settings_.max_depth <= 0) settings_.max_depth = ch02::DefaultMaxDepth;
 }
 
+// BOOK(bidirectional-sample)
+void bidirectional_sample(const Scene& scene, const ch03::LightSampler& lights, const BidirectionalSettings& settings,
+                          const Vec2& film, SampleStream& samples, ScratchArena& arena, SubpathStorage& storage,
+                          const std::function<void(const BidirectionalContribution&)>& record) {
+    // A path of max_depth segments has max_depth + 1 vertices: all of them on the camera side
+    // for s = 0, all but the pinhole on the light side for t = 1.
+    const int max_depth = settings.max_depth;
+    storage.camera.resize(static_cast<std::size_t>(max_depth) + 1);
+    storage.light.resize(static_cast<std::size_t>(max_depth));
+    const int camera_count =
+        camera_subpath(scene, scene.camera->generate_ray(film), samples, arena, max_depth + 1, storage.camera.data());
+    const int light_count = light_subpath(scene, lights, samples, arena, max_depth, storage.light.data());
+
+    // Every strategy (s, t) of every length: t >= 1 (a pinhole cannot be hit), s + t >= 2.
+    samples.start_stream(ConnectionStream);
+    for (int t = 1; t <= camera_count; ++t)
+        for (int s = 0; s <= light_count; ++s) {
+            const int segments = s + t - 1;
+            if (segments < 1 || segments > max_depth) continue;
+            const StrategyContribution c = connect_strategy(scene, lights, settings.heuristic, storage.light.data(), s,
+                                                            storage.camera.data(), t, samples);
+            if (is_black(c.unweighted)) continue;
+            record({c.at_raster ? c.raster_position : film, c.unweighted * c.weight, c.unweighted, s, t});
+        }
+}
+// END BOOK
+
 // BOOK(bdpt-render)
 RenderResult BidirectionalPathTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
     const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
-    const int max_depth = settings_.max_depth;
     const PinholeCamera& pinhole = *scene.camera;
-    const StrategyLayers layers(max_depth);
+    const StrategyLayers layers(settings_.max_depth);
     const bool strategy_images = settings.strategy_images;
 
     const LightPathEstimator estimator = [&](std::uint32_t slot, PCG32& random, ScratchArena& arena,
                                              SplatBuffer& splats) {
-        // A path of max_depth segments has max_depth + 1 vertices: all of them on the camera
-        // side for s = 0, all but the pinhole on the light side for t = 1.
-        thread_local std::vector<PathVertex> camera_path, light_path;
-        camera_path.resize(static_cast<std::size_t>(max_depth) + 1);
-        light_path.resize(static_cast<std::size_t>(max_depth));
-
+        thread_local SubpathStorage storage;
+        IndependentSamples samples(random);
+        // One sample per pixel and batch: the film position within this slot's pixel.
         const int x = static_cast<int>(slot % static_cast<std::uint32_t>(pinhole.width()));
         const int y = static_cast<int>(slot / static_cast<std::uint32_t>(pinhole.width()));
-        const Vec2 film(static_cast<float>(x) + random.next_float(), static_cast<float>(y) + random.next_float());
-        const int camera_count =
-            camera_subpath(scene, pinhole.generate_ray(film), random, arena, max_depth + 1, camera_path.data());
-        const int light_count = light_subpath(scene, lights, random, arena, max_depth, light_path.data());
-
-        // Every strategy (s, t) of every length: t >= 1 (a pinhole cannot be hit), s + t >= 2.
-        for (int t = 1; t <= camera_count; ++t)
-            for (int s = 0; s <= light_count; ++s) {
-                const int segments = s + t - 1;
-                if (segments < 1 || segments > max_depth) continue;
-                const StrategyContribution c = connect_strategy(scene, lights, settings_.heuristic, light_path.data(),
-                                                                s, camera_path.data(), t, random);
-                if (is_black(c.unweighted)) continue;
-                const Vec2 where = c.at_raster ? c.raster_position : film;
-                const Spectrum weighted = c.unweighted * c.weight;
-                if (c.weight > 0.0f) splats.add_splat(where, weighted);
-                if (strategy_images) {
-                    if (c.weight > 0.0f) splats.add_splat(where, weighted, layers.weighted_layer(s, t));
-                    if (layers.has_image(s, t)) splats.add_splat(where, c.unweighted, layers.unweighted_layer(s, t));
-                }
-            }
+        const Vec2 film(static_cast<float>(x) + samples.next_float(), static_cast<float>(y) + samples.next_float());
+        bidirectional_sample(scene, lights, settings_, film, samples, arena, storage,
+                             [&](const BidirectionalContribution& c) {
+                                 if (!is_black(c.weighted)) splats.add_splat(c.raster_position, c.weighted);
+                                 if (!strategy_images) return;
+                                 if (!is_black(c.weighted))
+                                     splats.add_splat(c.raster_position, c.weighted, layers.weighted_layer(c.s, c.t));
+                                 if (layers.has_image(c.s, c.t))
+                                     splats.add_splat(c.raster_position, c.unweighted, layers.unweighted_layer(c.s, c.t));
+                             });
     };
     std::vector<Image> layer_images;
     RenderResult result = render_light_paths(scene, settings, progress, estimator,

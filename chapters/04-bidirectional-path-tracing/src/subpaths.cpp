@@ -15,7 +15,7 @@ namespace {
 // density pdf_direction; writes at most max_vertices more vertices and returns how many.
 // `beta` is the subpath's throughput, `scattering` the part of it that Russian roulette looks
 // at (for a light subpath the emitted power is not part of it: it is in watts, not a fraction).
-int random_walk(const Scene& scene, Ray ray, PCG32& random, ScratchArena& arena, Spectrum beta, Spectrum scattering,
+int random_walk(const Scene& scene, Ray ray, SampleStream& samples, ScratchArena& arena, Spectrum beta, Spectrum scattering,
                 float pdf_direction, int max_vertices, Transport transport, PathVertex* path) {
     if (max_vertices <= 0) return 0;
     int count = 0;
@@ -58,8 +58,8 @@ int random_walk(const Scene& scene, Ray ray, PCG32& random, ScratchArena& arena,
         // Sample the next direction. A light subpath scatters with the adjoint BSDF (as light
         // tracing does: the shading-normal correction and eta^2 on transmission).
         const Vec3 wo = vertex.frame.to_local(vertex.wo);
-        const Vec2 u(random.next_float(), random.next_float());
-        const std::optional<BSDFSample> sample = bsdf.sample(wo, u, random.next_float());
+        const Vec2 u(samples.next_float(), samples.next_float());
+        const std::optional<BSDFSample> sample = bsdf.sample(wo, u, samples.next_float());
         if (!sample || sample->pdf <= 0.0f) break;
         const Vec3 wi_world = vertex.frame.to_world(sample->wi);
         Spectrum weight = sample->weight();
@@ -87,7 +87,7 @@ int random_walk(const Scene& scene, Ray ray, PCG32& random, ScratchArena& arena,
         // and the weights of a path still sum to one.
         if (count >= ch02::RussianRouletteStart) {
             const float q = ch02::russian_roulette_continue_probability(scattering);
-            if (random.next_float() >= q) break;
+            if (samples.next_float() >= q) break;
             beta /= q;
             scattering /= q;
         }
@@ -100,7 +100,7 @@ int random_walk(const Scene& scene, Ray ray, PCG32& random, ScratchArena& arena,
 }  // namespace
 
 // BOOK(camera-subpath)
-int camera_subpath(const Scene& scene, const Ray& camera_ray, PCG32& random, ScratchArena& arena, int max_vertices,
+int camera_subpath(const Scene& scene, const Ray& camera_ray, SampleStream& samples, ScratchArena& arena, int max_vertices,
                    PathVertex* path) {
     if (max_vertices <= 0) return 0;
     PathVertex& camera = path[0];
@@ -109,18 +109,19 @@ int camera_subpath(const Scene& scene, const Ray& camera_ray, PCG32& random, Scr
     camera.beta = Spectrum(1.0f);  // We / pdf = 1 for a pixel's rays: the box filter
     camera.position = camera_ray.origin;
     const float pdf_direction = scene.camera->pdf_direction(camera_ray.direction);
-    return 1 + random_walk(scene, camera_ray, random, arena, Spectrum(1.0f), Spectrum(1.0f), pdf_direction,
+    return 1 + random_walk(scene, camera_ray, samples, arena, Spectrum(1.0f), Spectrum(1.0f), pdf_direction,
                            max_vertices - 1, Transport::Radiance, path + 1);
 }
 // END BOOK
 
 // BOOK(light-subpath)
-int light_subpath(const Scene& scene, const ch03::LightSampler& lights, PCG32& random, ScratchArena& arena,
+int light_subpath(const Scene& scene, const ch03::LightSampler& lights, SampleStream& samples, ScratchArena& arena,
                   int max_vertices, PathVertex* path) {
     if (max_vertices <= 0) return 0;
-    const std::optional<ch03::LightSampler::Choice> choice = lights.sample(random.next_float());
-    const Vec2 u_position(random.next_float(), random.next_float());
-    const Vec2 u_direction(random.next_float(), random.next_float());
+    samples.start_stream(LightStream);
+    const std::optional<ch03::LightSampler::Choice> choice = lights.sample(samples.next_float());
+    const Vec2 u_position(samples.next_float(), samples.next_float());
+    const Vec2 u_direction(samples.next_float(), samples.next_float());
     if (!choice || choice->probability <= 0.0f) return 0;
     const std::optional<LightEmissionSample> emission = choice->light->sample_le(u_position, u_direction);
     if (!emission || emission->pdf_position <= 0.0f || emission->pdf_direction <= 0.0f || is_black(emission->radiance))
@@ -147,7 +148,7 @@ int light_subpath(const Scene& scene, const ch03::LightSampler& lights, PCG32& r
     const Vec3& origin = emission->ray.origin;
     const Ray ray{offset_ray_origin(origin, emission_origin_error(origin), emission->normal, emission->ray.direction),
                   emission->ray.direction};
-    const int count = 1 + random_walk(scene, ray, random, arena, beta, Spectrum(1.0f), emission->pdf_direction,
+    const int count = 1 + random_walk(scene, ray, samples, arena, beta, Spectrum(1.0f), emission->pdf_direction,
                                       max_vertices - 1, Transport::Importance, path + 1);
 
     // A light at infinity: its "position" is the direction light comes from, sampled with the

@@ -47,6 +47,12 @@ struct RenderSettings {
     // True to make the per-strategy images of bidirectional path tracing (`--bdpt-strategies`):
     // RenderResult::extra_images. Only integrators with has_strategy_images() make them.
     bool strategy_images = false;
+    // Metropolis light transport (chapter 05; 0: the integrator's defaults): the probability of a
+    // large step, the small steps' standard deviation, the bootstrap paths, the chains.
+    double mlt_large_step_probability = 0.0;
+    double mlt_sigma = 0.0;
+    std::uint64_t mlt_bootstrap_samples = 0;
+    int mlt_chains = 0;
 };
 
 struct RenderResult {
@@ -61,6 +67,10 @@ struct RenderResult {
     // Extra images the integrator made besides the estimate, by file name (bidirectional path
     // tracing's per-strategy images, RenderSettings::strategy_images); written by `render`.
     std::vector<std::pair<std::string, Image>> extra_images;
+    // What the user should know about this render (printed by `render` as warnings and notes:
+    // a scene whose light no path reaches, a Markov chain's acceptance rate).
+    std::vector<std::string> warnings;
+    std::vector<std::string> notes;
 };
 
 class Integrator {

@@ -5,8 +5,12 @@
 #pragma once
 
 #include "freezeray/integrator.hpp"
+#include "freezeray/sample_stream.hpp"
 #include "freezeray/ch03/mis.hpp"
 #include "freezeray/ch04/path_vertex.hpp"
+
+#include <functional>
+#include <vector>
 
 namespace freezeray::ch04 {
 
@@ -23,12 +27,35 @@ struct StrategyContribution {
 // point on a light, t = 1 connects to the camera (through its importance), others connect the
 // two end vertices deterministically. Uses random numbers only for s = 1.
 StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
-                                      const PathVertex* light, int s, const PathVertex* camera, int t, PCG32& random);
+                                      const PathVertex* light, int s, const PathVertex* camera, int t,
+                                      SampleStream& samples);
 
 struct BidirectionalSettings {
     int max_depth = 0;  // segments of a whole path; 0: chapter 02's default
     ch03::MisHeuristic heuristic = ch03::MisHeuristic::Power;
 };
+
+// One contribution of a bidirectional sample: where it lands on the film and how much.
+struct BidirectionalContribution {
+    Vec2 raster_position;
+    Spectrum weighted;    // MIS-weighted: what the image adds
+    Spectrum unweighted;  // the strategy alone
+    int s = 0, t = 0;
+};
+
+// The subpaths' storage, reused from sample to sample (no allocation per sample).
+struct SubpathStorage {
+    std::vector<PathVertex> camera, light;
+};
+
+// One bidirectional sample (Veach 1997, section 10.2): a camera subpath through film position
+// `film` (pixels) and a light subpath, joined in every strategy (s, t) of at most max_depth
+// segments; `record` receives each non-zero contribution. The caller has started CameraStream
+// (and drawn the film position from it); the light subpath and the connections use their own
+// streams. Chapter 05's Metropolis light transport drives this same function.
+void bidirectional_sample(const Scene& scene, const ch03::LightSampler& lights, const BidirectionalSettings& settings,
+                          const Vec2& film, SampleStream& samples, ScratchArena& arena, SubpathStorage& storage,
+                          const std::function<void(const BidirectionalContribution&)>& record);
 
 class BidirectionalPathTracer final : public Integrator {
 public:

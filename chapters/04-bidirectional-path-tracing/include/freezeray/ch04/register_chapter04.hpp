@@ -5,7 +5,7 @@
 
 namespace freezeray {
 
-// Registers chapter 04's integrators ("light-tracing"; "bdpt" is still to come). Call after
+// Registers chapter 04's integrators ("light-tracing", "bdpt", "bdpt-balance"). Call after
 // register_chapter03.
 void register_chapter04(Registry& registry);
 

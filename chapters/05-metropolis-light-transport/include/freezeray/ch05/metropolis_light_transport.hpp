@@ -1,0 +1,67 @@
+// Metropolis light transport in primary sample space (`mlt`; Kelemen, Szirmay-Kalos, Antal and
+// Csonka 2002; Veach and Guibas 1997 for MLT itself; pbrt-v3, section 16.4): Markov chains whose
+// states are the uniform numbers of a chapter 04 bidirectional sample, so that samples gather
+// where the image carries light.
+#pragma once
+
+#include "freezeray/integrator.hpp"
+#include "freezeray/ch04/bidirectional_path_tracer.hpp"
+#include "freezeray/ch05/primary_samples.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace freezeray::ch05 {
+
+struct MltSettings {
+    int max_depth = 0;                    // segments of a whole path; 0: chapter 02's default
+    float large_step_probability = 0.3f;  // p_large (Kelemen et al. 2002 use 0.3 as well)
+    float sigma = 0.01f;                  // the small steps' standard deviation (pbrt-v3's default)
+    std::uint64_t bootstrap_samples = 100000;
+    int chains = 1000;
+};
+
+// One bidirectional sample's contributions and its scalar value, the target function of the
+// chain: I(u) = the sum of the luminances of the sample's MIS-weighted contributions.
+struct PathContributions {
+    struct Splat {
+        Vec2 raster_position;
+        Spectrum value;
+    };
+    std::vector<Splat> splats;
+    float value = 0.0f;
+    std::uint64_t invalid = 0;  // NaN, Inf or negative contributions left out (a bug if any)
+};
+
+// Evaluates the bidirectional sample that `samples` describes: the film position from the first
+// two numbers of the camera stream (anywhere on the film), then chapter 04's bidirectional_sample.
+void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
+                   PrimarySamples& samples, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out);
+
+// The bootstrap (Veach 1997, section 11.3.1; pbrt-v3, section 16.4.3): independent samples whose
+// values estimate the normalisation b = the integral of I over primary sample space (the mean
+// image luminance) and from which the chains' starting states are drawn in proportion to I.
+struct Bootstrap {
+    std::vector<float> values;  // I of bootstrap sample i
+    double b = 0.0;             // their mean
+    double standard_error = 0.0;
+};
+Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& bidirectional,
+                        const MltSettings& settings, std::uint64_t seed, int threads);
+
+// The generator of bootstrap sample i (and of the chain that starts from it, until it mutates).
+PCG32 bootstrap_stream(std::uint64_t seed, std::uint64_t index);
+
+class MetropolisLightTransport final : public Integrator {
+public:
+    explicit MetropolisLightTransport(const MltSettings& settings);
+
+    RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
+    bool samples_lights() const override { return true; }
+    bool resumable() const override { return false; }
+
+private:
+    MltSettings settings_;
+};
+
+}  // namespace freezeray::ch05
