@@ -26,20 +26,32 @@ RunStatistics run_statistics(const std::vector<Image>& runs);
 struct SplattingAgreement {
     std::string integrator;       // the splatting integrator under test
     std::string scene;            // under scenes/
-    std::uint64_t first_seed = 1; // the reference uses it, run k uses first_seed + 1 + k
+    std::uint64_t first_seed = 1; // the reference uses it (and the next ones), run k uses first_seed + 1000 + k
     int size = 32;                // width and height
     int runs = 16;
     std::uint64_t spp = 64;       // per run
-    std::uint64_t reference_spp = 1024;  // pt-mis
+    std::string reference = "pt-mis";
+    std::uint64_t reference_spp = 1024;
+    // 0: the reference is one render of a per-pixel integrator, with its own variance; > 0: that
+    // many independent runs of reference_spp each (a splatting reference, such as bdpt).
+    int reference_runs = 0;
+    std::uint64_t mlt_bootstrap = 0;  // for mlt runs (0: its default)
+    int mlt_chains = 0;
     std::vector<int> block_sizes;  // one blockwise Welch test each, at convergence_test_alpha
 };
 
-// Renders `runs` independent images with the integrator and one pt-mis reference, and REQUIREs
-// (Catch) that they agree: for each block size, the block means of the runs (their mean and
-// variance over the runs, n = runs) against the reference's block means (variance sum v / B^2,
-// with n - 1 degrees of freedom of its samples: fewer than its true ones, conservative), each
-// test Sidak-corrected over blocks x 3 channels at convergence_test_alpha. Every render must be
-// free of invalid samples. Writes evidence on failure.
+// Renders `runs` independent images with the integrator and the reference, and REQUIREs (Catch)
+// that they agree: for each block size, the block means of the runs (their mean and variance
+// over the runs, n = runs) against the reference's block means (a per-pixel reference: variance
+// sum v / B^2, with n - 1 degrees of freedom of its samples, fewer than its true ones:
+// conservative; a splatting reference: its own runs), each test Sidak-corrected over blocks x 3
+// channels at convergence_test_alpha. Every render must be free of invalid samples. Writes
+// evidence on failure.
 void require_agrees_with_pt_mis(const SplattingAgreement& request);
+
+// The per-pixel mean and variance of the mean of `runs` independent renders (seeds first_seed,
+// first_seed + 1, ...), each required free of invalid samples.
+RunStatistics render_runs(const std::string& integrator, const std::string& scene, std::uint64_t first_seed, int runs,
+                          std::uint64_t spp, int size, std::uint64_t mlt_bootstrap = 0, int mlt_chains = 0);
 
 }  // namespace freezeray::testing

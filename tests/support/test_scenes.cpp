@@ -68,6 +68,8 @@ RenderResult render(const TestRender& request) {
     settings.threads = request.threads;
     settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
     settings.strategy_images = request.strategy_images;
+    settings.mlt_bootstrap_samples = request.mlt_bootstrap;
+    settings.mlt_chains = request.mlt_chains;
     const auto integrator = full_registry().make_integrator(request.integrator, settings, "test");
     Progress quiet(true);
     return integrator->render(scene, settings, quiet);

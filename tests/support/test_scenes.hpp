@@ -36,6 +36,8 @@ struct TestRender {
     int height = 0;
     int max_depth = 0;             // 0: the scene's, else the integrator's default
     bool strategy_images = false;  // RenderSettings::strategy_images (bdpt)
+    std::uint64_t mlt_bootstrap = 0;  // RenderSettings::mlt_bootstrap_samples (0: mlt's default)
+    int mlt_chains = 0;               // RenderSettings::mlt_chains
 };
 
 // Loads and renders, quietly.

@@ -81,6 +81,7 @@ void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const c
 Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& bidirectional,
                         const MltSettings& settings, std::uint64_t seed, int threads) {
     Bootstrap result;
+    threads = resolve_thread_count(threads);
     const std::uint64_t count = settings.bootstrap_samples;
     result.values.assign(count, 0.0f);
     const std::uint64_t units = (count + BootstrapSamplesPerUnit - 1) / BootstrapSamplesPerUnit;

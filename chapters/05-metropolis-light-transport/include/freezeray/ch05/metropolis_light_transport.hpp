@@ -47,7 +47,7 @@ struct Bootstrap {
     double standard_error = 0.0;
 };
 Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& bidirectional,
-                        const MltSettings& settings, std::uint64_t seed, int threads);
+                        const MltSettings& settings, std::uint64_t seed, int threads);  // threads 0: every core
 
 // The generator of bootstrap sample i (and of the chain that starts from it, until it mutates).
 PCG32 bootstrap_stream(std::uint64_t seed, std::uint64_t index);
