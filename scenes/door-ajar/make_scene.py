@@ -5,6 +5,7 @@ doorway (x in [1.5, 2.4], y in [0, 2]). The camera's room (z < 4) has no light; 
 (z > 4.1) has a bright ceiling light. The door, 0.9 x 2 x 0.04, hangs on the doorway's x = 1.5
 side and is opened DOOR_DEGREES into the camera's room: light reaches the camera's room only
 through the crack between the door's free edge and the frame, and after that by bouncing."""
+import argparse
 import math
 import os
 import sys
@@ -41,7 +42,21 @@ def axis_box(x0, x1, y0, y1, z0, z1):
 
 
 def main():
-    obj = ObjBuilder("door-ajar.mtl")
+    global DOOR_DEGREES, LIGHT, LIGHT_RADIANCE
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--door-degrees", type=float, default=DOOR_DEGREES)
+    parser.add_argument("--light-size", type=float, default=None,
+                        help="side of a square light at the middle of the default one, its power kept")
+    parser.add_argument("--name", default="door-ajar", help="writes NAME.obj and NAME.mtl")
+    args = parser.parse_args()
+    DOOR_DEGREES = args.door_degrees
+    if args.light_size is not None:
+        x0, x1, z0, z1 = LIGHT
+        scale = (x1 - x0) * (z1 - z0) / (args.light_size * args.light_size)
+        cx, cz, h = (x0 + x1) / 2, (z0 + z1) / 2, args.light_size / 2
+        LIGHT = (cx - h, cx + h, cz - h, cz + h)
+        LIGHT_RADIANCE = tuple(c * scale for c in LIGHT_RADIANCE)
+    obj = ObjBuilder(os.path.basename(args.name) + ".mtl")
     # The outer box, seen from inside (diffuse surfaces are two-sided: winding only matters to emitters).
     obj.add("floor", *quad((0, 0, 0), (WIDTH, 0, 0), (WIDTH, 0, DEPTH), (0, 0, DEPTH)))
     obj.add("walls", *quad((0, HEIGHT, 0), (0, HEIGHT, DEPTH), (WIDTH, HEIGHT, DEPTH), (WIDTH, HEIGHT, 0)))
@@ -70,9 +85,10 @@ def main():
     obj.add("light", *quad((x0, LIGHT_Y, z0), (x1, LIGHT_Y, z0), (x1, LIGHT_Y, z1), (x0, LIGHT_Y, z1)))
     # A sphere-free still life in the camera's room: a low box to catch the light from the crack.
     obj.add("table", *axis_box(2.6, 3.4, 0.0, 0.7, 2.4, 3.2))
-    obj.write("door-ajar.obj", "# door-ajar: two rooms, a door ajar between them (written by make_scene.py)\n")
-    with open("door-ajar.mtl", "w") as mtl:
-        mtl.write("# door-ajar materials (written by make_scene.py)\n")
+    obj.write(args.name + ".obj", "# %s: two rooms, a door ajar between them (written by door-ajar/make_scene.py, "
+              "door %g degrees)\n" % (os.path.basename(args.name), DOOR_DEGREES))
+    with open(args.name + ".mtl", "w") as mtl:
+        mtl.write("# %s materials (written by door-ajar/make_scene.py)\n" % os.path.basename(args.name))
         mtl.write("newmtl floor\nKd 0.55 0.5 0.45\n\n")
         mtl.write("newmtl walls\nKd 0.75 0.75 0.75\n\n")
         mtl.write("newmtl door\nKd 0.6 0.45 0.3\n\n")

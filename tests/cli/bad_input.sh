@@ -67,6 +67,8 @@ expect_failure "texture that does not exist" "textured.mtl:3" "no-such-texture.p
 expect_failure "negative sample count" "--spp" -- render "$work/good.json" --spp -5 --out "$work/out.png"
 expect_failure "zero sample count" "--spp" -- render "$work/good.json" --spp 0 --out "$work/out.png"
 expect_failure "unknown integrator" "--integrator" "pt-nope" -- render "$work/good.json" --integrator pt-nope --out "$work/out.png"
+expect_failure "large-step probability out of range" "--mlt-large-step" "probability" -- render "$work/good.json" --mlt-large-step 2 --out "$work/out.png"
+expect_failure "negative small-step size" "--mlt-sigma" -- render "$work/good.json" --mlt-sigma -0.1 --out "$work/out.png"
 expect_failure "integrator of a later chapter" "introduced in chapter 03" -- render "$work/good.json" --integrator pt-mis --out "$work/out.png"
 expect_failure "output folder that does not exist" "$work/no/such/folder/out.png" -- render "$work/good.json" --out "$work/no/such/folder/out.png"
 expect_failure "unknown output format" "out.tiff" -- render "$work/good.json" --out "$work/out.tiff"

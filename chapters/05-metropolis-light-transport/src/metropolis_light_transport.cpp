@@ -143,7 +143,11 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
 
     RenderResult result;
     SplatFilm film(width, height);
-    const Bootstrap bootstrap = run_bootstrap(scene, lights, bidirectional, mlt, settings.seed, threads);
+    // --sample-offset gives another, independent render of the same seed (for `merge`): MLT has
+    // no per-pixel sample indices, so the offset enters its seed.
+    const std::uint64_t seed =
+        settings.first_sample == 0 ? settings.seed : mix_bits(settings.seed ^ mix_bits(settings.first_sample));
+    const Bootstrap bootstrap = run_bootstrap(scene, lights, bidirectional, mlt, seed, threads);
     std::uint64_t done = 0;  // rounds: each is one mutation per pixel
     if (!(bootstrap.b > 0.0)) {
         result.warnings.push_back("mlt: none of the " + std::to_string(mlt.bootstrap_samples) +
@@ -159,12 +163,12 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
         const auto chain_count = static_cast<std::size_t>(std::max(1, mlt.chains));
         std::vector<Chain> chains;
         chains.reserve(chain_count);
-        PCG32 chooser = make_chain_stream(settings.seed, 1ULL << 60);
+        PCG32 chooser = make_chain_stream(seed, 1ULL << 60);
         for (std::size_t c = 0; c < chain_count; ++c) {
             const std::size_t index = starts.sample_discrete(chooser.next_float());
-            chains.push_back(Chain{PrimarySamples(bootstrap_stream(settings.seed, index), mlt.sigma,
+            chains.push_back(Chain{PrimarySamples(bootstrap_stream(seed, index), mlt.sigma,
                                                   mlt.large_step_probability, ch04::BidirectionalStreamCount),
-                                   acceptance_stream(settings.seed, c), {}, {}});
+                                   acceptance_stream(seed, c), {}, {}});
         }
         std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
         parallel_for(chain_count, threads, [&](std::size_t c, int thread) {
@@ -172,7 +176,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
             Chain& chain = chains[c];
             evaluate_path(scene, lights, bidirectional, chain.samples, arenas[static_cast<std::size_t>(thread)], storage,
                           chain.current);
-            chain.samples.set_random(mutation_stream(settings.seed, c));
+            chain.samples.set_random(mutation_stream(seed, c));
         });
         // END BOOK
 
