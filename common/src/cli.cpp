@@ -81,6 +81,7 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
         std::fprintf(stderr, "%-12s %8llu spp %8.2f s  relMSE %-10.4g%s  slope %.2f\n", run.integrator.c_str(),
                      static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, run.relative_mse,
                      run.error_is_estimated ? " (estimated)" : "", run.fit.slope);
+        for (const std::string& w : run.result.warnings) std::fprintf(stderr, "warning: %s: %s\n", run.integrator.c_str(), w.c_str());
     }
     std::cout << request.out_folder << "/report.html\n";
     return 0;

@@ -266,4 +266,13 @@ CropErrorTable crop_error_table(const Comparison& comparison, const CropRegion& 
     return table;
 }
 
+std::vector<std::string> integrator_notes(const Comparison& comparison) {
+    std::vector<std::string> lines;
+    for (const IntegratorRun& run : comparison.runs) {
+        for (const std::string& warning : run.result.warnings) lines.push_back(run.integrator + ": warning: " + warning);
+        for (const std::string& note : run.result.notes) lines.push_back(run.integrator + ": " + note);
+    }
+    return lines;
+}
+
 }  // namespace freezeray::report

@@ -105,6 +105,10 @@ std::vector<std::pair<std::string, std::string>> header_facts(const Comparison& 
 // The "how to read this" paragraphs, plain text (no markup).
 std::vector<std::string> how_to_read(const Comparison& comparison);
 
+// What the integrators said about their runs (RenderResult warnings and notes: a Markov chain's
+// acceptance rates, a scene whose light no path reaches), as "integrator: text" lines.
+std::vector<std::string> integrator_notes(const Comparison& comparison);
+
 // The caption of the error maps: what is mapped, and the bounds.
 std::string error_map_caption(const Comparison& comparison);
 

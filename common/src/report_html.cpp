@@ -205,6 +205,11 @@ std::string comparison_html(const Comparison& comparison, const Layout& layout, 
                        escape_xml(title) + "</title>\n" + Style + "</head>\n<body>\n<h1>" + escape_xml(title) + "</h1>\n";
     html += facts_and_reading(comparison, layout);
     html += metrics_section(comparison);
+    if (const std::vector<std::string> notes = integrator_notes(comparison); !notes.empty()) {
+        html += "<h2>Notes from the integrators</h2>\n<ul>\n";
+        for (const std::string& line : notes) html += "<li>" + escape_xml(line) + "</li>\n";
+        html += "</ul>\n";
+    }
     html += plot_and_accuracy(comparison, layout);
     html += images_section(comparison, layout, folder);
     html += error_maps_section(comparison, layout, folder);

@@ -134,6 +134,11 @@ std::string comparison_markdown(const Comparison& comparison, const Layout& layo
     text += "\n## How to read this\n\n";
     for (const std::string& paragraph : how_to_read(comparison)) text += paragraph + "\n\n";
     text += metrics_section(comparison);
+    if (const std::vector<std::string> notes = integrator_notes(comparison); !notes.empty()) {
+        text += "## Notes from the integrators\n\n";
+        for (const std::string& line : notes) text += "- " + line + "\n";
+        text += "\n";
+    }
     text += plot_section(comparison, layout);
     text += accuracy_section(comparison);
     text += images_section(comparison, layout);
