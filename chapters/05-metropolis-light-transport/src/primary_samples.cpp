@@ -1,5 +1,5 @@
 // Primary samples: lazy extension, small and large steps, backup and restore (book chapter 05;
-// Kelemen et al. 2002; pbrt-v3, section 16.4.2).
+// Kelemen et al. 2002; pbrt-v3, section 16.4).
 #include "freezeray/ch05/primary_samples.hpp"
 
 #include "freezeray/math.hpp"

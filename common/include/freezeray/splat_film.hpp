@@ -1,6 +1,6 @@
 // The splatting film: contributions that land on any pixel, from light paths (light tracing and,
 // later, bidirectional path tracing's t = 1 strategies; Veach 1997, section 10.2; pbrt-v3,
-// section 16.4.5). Its image is bit-identical for a given seed whatever the thread count.
+// chapter 16). Its image is bit-identical for a given seed whatever the thread count.
 #pragma once
 
 #include "freezeray/film.hpp"

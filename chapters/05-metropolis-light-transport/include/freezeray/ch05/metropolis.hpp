@@ -15,7 +15,7 @@ float acceptance_probability(float current, float proposed);
 // A small step of one primary sample (Kelemen et al. 2002, section 4): value moved by a normal
 // sample times sigma, wrapped around into [0, 1) so that the step is symmetric. `steps` small
 // steps not applied yet (the sample was not read for that many iterations) add up to one step of
-// deviation sigma sqrt(steps) (pbrt-v3, section 16.4.2).
+// deviation sigma sqrt(steps) (pbrt-v3, section 16.4).
 float small_step(float value, float normal_sample, float sigma, std::uint64_t steps);
 
 }  // namespace freezeray::ch05

@@ -38,7 +38,7 @@ struct PathContributions {
 void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
                    PrimarySamples& samples, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out);
 
-// The bootstrap (Veach 1997, section 11.3.1; pbrt-v3, section 16.4.3): independent samples whose
+// The bootstrap (Veach 1997, section 11.3.1; pbrt-v3, section 16.4): independent samples whose
 // values estimate the normalisation b = the integral of I over primary sample space (the mean
 // image luminance) and from which the chains' starting states are drawn in proportion to I.
 struct Bootstrap {

@@ -1,7 +1,7 @@
 // The state of a Markov chain in primary sample space (Kelemen, Szirmay-Kalos, Antal and
 // Csonka 2002): the vector of uniform numbers a bidirectional sample reads, extended lazily as
 // the sample asks for more, mutated by small and large steps, and restored exactly when a
-// proposal is rejected (pbrt-v3, section 16.4.2, MLTSampler).
+// proposal is rejected (pbrt-v3, section 16.4, MLTSampler).
 #pragma once
 
 #include "freezeray/random.hpp"
