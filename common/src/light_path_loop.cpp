@@ -79,7 +79,12 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
                 for (std::uint32_t slot = first; slot < last; ++slot) {
                     // Every random number of this light path comes from its own stream.
                     PCG32 random = make_pixel_stream(settings.seed, slot, sample);
-                    buffer.begin_light_path(sample * slots + slot);
+                    // The half-buffer alternates with the sample for each slot: a bidirectional
+                    // sample's camera-path contributions stay in the slot's own pixel, so halves
+                    // by slot alone (sample * slots + slot with an even pixel count) would put all
+                    // of a pixel's camera samples in one half and the error estimate would
+                    // measure the difference between two different things.
+                    buffer.begin_light_path(sample + slot);
                     arena.reset();
                     estimator(slot, random, arena, buffer);
                 }

@@ -270,7 +270,8 @@ std::vector<std::string> integrator_notes(const Comparison& comparison) {
     std::vector<std::string> lines;
     for (const IntegratorRun& run : comparison.runs) {
         for (const std::string& warning : run.result.warnings) lines.push_back(run.integrator + ": warning: " + warning);
-        for (const std::string& note : run.result.notes) lines.push_back(run.integrator + ": " + note);
+        for (const std::string& note : run.result.notes)  // notes that name their integrator already keep their text
+            lines.push_back(note.rfind(run.integrator + ":", 0) == 0 ? note : run.integrator + ": " + note);
     }
     return lines;
 }

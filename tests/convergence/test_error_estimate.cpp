@@ -64,3 +64,40 @@ TEST_CASE("a target error stops the render once the estimated relMSE reaches it"
     CHECK(result.estimated_relative_mse <= settings.target_error);
     CHECK(estimates[estimates.size() - 2] > settings.target_error);  // it did not stop later than needed
 }
+
+TEST_CASE("the splatting integrators' reference-free relMSE estimate matches the error between independent renders",
+          "[convergence][error-estimate][ch04][ch05]") {
+    // light-tracing, bdpt and mlt estimate their error from two half-images (SplatFilm). Two
+    // independent renders A and B of the same settings give the error directly: per pixel and
+    // channel, (A - B)^2 / 2 estimates one render's variance. Both sides average over 64x64x3
+    // values, so their ratio is 1 within a few percent for a correct estimate (the smallest
+    // effective number of values, where a few bright pixels dominate, is still in the hundreds:
+    // a ratio outside [0.5, 2] has a probability far below 1e-9). It caught the half-buffers
+    // being chosen by pixel alone, which made bdpt's estimate 30 times too large and not fall
+    // with samples. Deterministic (fixed seeds).
+    for (const std::string integrator : {"light-tracing", "bdpt", "mlt"}) {
+        testing::TestRender request;
+        request.scene = testing::scene_path("cornell-box/scene.json");
+        request.integrator = integrator;
+        request.width = request.height = 64;
+        request.samples_per_pixel = 64;
+        request.mlt_bootstrap = 20000;
+        request.mlt_chains = 256;
+        request.seed = 61;
+        const RenderResult a = testing::render(request);
+        request.seed = 62;
+        const RenderResult b = testing::render(request);
+        double measured = 0.0;
+        for (std::size_t i = 0; i < a.image.pixel_count(); ++i)
+            for (int c = 0; c < 3; ++c) {
+                const double mean = 0.5 * (a.image[i][c] + b.image[i][c]);
+                const double difference = a.image[i][c] - b.image[i][c];
+                measured += 0.5 * difference * difference / (mean * mean + RelativeMseEpsilon);
+            }
+        measured /= static_cast<double>(a.image.pixel_count() * 3);
+        const double estimated = 0.5 * (a.estimated_relative_mse + b.estimated_relative_mse);
+        INFO(integrator << ": estimated relMSE " << estimated << ", measured between two renders " << measured);
+        CHECK(estimated > 0.5 * measured);
+        CHECK(estimated < 2.0 * measured);
+    }
+}
