@@ -2,7 +2,8 @@
 // against bdpt's mean image luminance, and agreement with bdpt on the Cornell box, cornell-lamp
 // and door-ajar over independent runs (both sides: 16 runs each; each chain run is correlated
 // within itself, the runs are not). Statistical tests at convergence_test_alpha (label
-// convergence, tests/STATISTICS.md): 2 + 2 + 1 blockwise Welch tests and 1 Welch test.
+// convergence, tests/STATISTICS.md): 2 + 2 + 1 blockwise Welch tests of mlt, 3 of multiplexed mlt, and
+// 1 Welch test.
 #include "freezeray/scene.hpp"
 #include "freezeray/ch05/metropolis_light_transport.hpp"
 
@@ -23,9 +24,10 @@ namespace {
 constexpr std::uint64_t TestBootstrap = 20000;
 constexpr int TestChains = 128;
 
-void require_mlt_agrees_with_bdpt(const std::string& scene, std::uint64_t seed, const std::vector<int>& blocks) {
+void require_mlt_agrees_with_bdpt(const std::string& scene, std::uint64_t seed, const std::vector<int>& blocks,
+                                  const std::string& integrator = "mlt") {
     testing::SplattingAgreement request;
-    request.integrator = "mlt";
+    request.integrator = integrator;
     request.scene = scene;
     request.first_seed = seed;
     request.spp = 64;  // mutations per pixel
@@ -106,4 +108,11 @@ TEST_CASE("mlt agrees with bdpt on cornell-lamp (light after a bounce off the ce
 
 TEST_CASE("mlt agrees with bdpt on door-ajar (light only through a crack)", "[convergence][ch05]") {
     require_mlt_agrees_with_bdpt("door-ajar/scene.json", 1301, {32});  // 1 test
+}
+
+TEST_CASE("multiplexed mlt agrees with bdpt on the Cornell box and on caustic", "[convergence][ch05]") {
+    // Each run's b comes from 20000 bootstrap paths spread over 64 path lengths (a few per cent
+    // of error, part of the runs' spread). 3 tests.
+    require_mlt_agrees_with_bdpt("cornell-box/scene.json", 1401, {32, 8}, "mlt-multiplexed");
+    require_mlt_agrees_with_bdpt("caustic/scene.json", 1501, {32}, "mlt-multiplexed");
 }

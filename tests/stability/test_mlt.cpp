@@ -20,10 +20,11 @@ using namespace freezeray::stability;
 
 namespace {
 
-RenderResult render_mlt(const std::string& scene, std::uint64_t bootstrap, int size = 0, std::uint64_t spp = 4) {
+RenderResult render_mlt(const std::string& scene, std::uint64_t bootstrap, int size = 0, std::uint64_t spp = 4,
+                        const std::string& integrator = "mlt") {
     testing::TestRender request;
     request.scene = hard_scene(scene);
-    request.integrator = "mlt";
+    request.integrator = integrator;
     request.width = request.height = size;
     request.samples_per_pixel = spp;
     request.seed = 160;
@@ -69,14 +70,17 @@ TEST_CASE("mlt starts and lights the image when almost every bootstrap path carr
     CHECK(static_cast<std::size_t>(lit) > result.image.pixel_count() / 2);
 }
 
-TEST_CASE("mlt's images are valid on the hard cases (no NaN, Inf or negative value)", "[stability][ch05]") {
+TEST_CASE("mlt's and multiplexed mlt's images are valid on the hard cases (no NaN, Inf or negative value)",
+          "[stability][ch05]") {
     for (const char* scene :
          {"point-light/scene.json", "point-light/on-surface.json", "point-light/spot.json",
           "light-touching-wall/scene.json", "glass-block/scene.json", "tiny-emitters/scene.json",
           "flipped-normals/twisted.json", "scale-1e-4/scene.json", "scale-1e4/scene.json", "grazing/scene.json",
           "inside-closed-mesh/scene.json", "sun-environment/scene.json", "environment-furnace/glass-cube.json",
           "white-furnace/rough-dielectric.json", "zero-power/scene.json", "far-and-tiny/scene.json"}) {
-        const RenderResult result = render_mlt(scene, 4000, 24);
-        check_valid(result, std::string(scene) + " with mlt");
+        for (const std::string integrator : {"mlt", "mlt-multiplexed"}) {
+            const RenderResult result = render_mlt(scene, 4000, 24, 4, integrator);
+            check_valid(result, std::string(scene) + " with " + integrator);
+        }
     }
 }

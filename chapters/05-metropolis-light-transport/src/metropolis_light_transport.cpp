@@ -41,6 +41,7 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
 // One Markov chain: its state (the primary samples and what they evaluate to) and its counts.
 struct Chain {
     PrimarySamples samples;
+    int segments = 0;  // multiplexed MLT: the chain's path length (fixed: chosen by its start)
     PCG32 acceptance;
     PathContributions current, proposed;
     std::uint64_t proposed_count = 0, accepted_count = 0;
@@ -96,8 +97,12 @@ Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, co
             // that starts from sample i regenerates it exactly.
             PrimarySamples samples(bootstrap_stream(seed, i), settings.sigma, settings.large_step_probability,
                                    ch04::BidirectionalStreamCount);
-            evaluate_path(scene, lights, bidirectional, samples, arenas[static_cast<std::size_t>(thread)], storage,
-                          contributions);
+            ScratchArena& arena = arenas[static_cast<std::size_t>(thread)];
+            if (settings.multiplexed)
+                evaluate_multiplexed_path(scene, lights, bidirectional, multiplexed_segments(i, bidirectional.max_depth),
+                                          samples, arena, storage, contributions);
+            else
+                evaluate_path(scene, lights, bidirectional, samples, arena, storage, contributions);
             result.values[i] = contributions.value;
         }
     });
@@ -111,6 +116,11 @@ Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, co
     result.b = count > 0 ? sum / n : 0.0;
     if (count > 1)
         result.standard_error = std::sqrt(std::max(0.0, (sum_squares - sum * sum / n) / (n - 1.0)) / n);
+    if (settings.multiplexed) {
+        // Each length had a max_depth-th of the samples: b is the sum over lengths of their means.
+        result.b *= bidirectional.max_depth;
+        result.standard_error *= bidirectional.max_depth;
+    }
     return result;
 }
 // END BOOK
@@ -168,14 +178,20 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
             const std::size_t index = starts.sample_discrete(chooser.next_float());
             chains.push_back(Chain{PrimarySamples(bootstrap_stream(seed, index), mlt.sigma,
                                                   mlt.large_step_probability, ch04::BidirectionalStreamCount),
+                                   mlt.multiplexed ? multiplexed_segments(index, mlt.max_depth) : 0,
                                    acceptance_stream(seed, c), {}, {}});
         }
         std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
+        const auto evaluate = [&](Chain& chain, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out) {
+            if (chain.segments > 0)
+                evaluate_multiplexed_path(scene, lights, bidirectional, chain.segments, chain.samples, arena, storage, out);
+            else
+                evaluate_path(scene, lights, bidirectional, chain.samples, arena, storage, out);
+        };
         parallel_for(chain_count, threads, [&](std::size_t c, int thread) {
             thread_local ch04::SubpathStorage storage;
             Chain& chain = chains[c];
-            evaluate_path(scene, lights, bidirectional, chain.samples, arenas[static_cast<std::size_t>(thread)], storage,
-                          chain.current);
+            evaluate(chain, arenas[static_cast<std::size_t>(thread)], storage, chain.current);
             chain.samples.set_random(mutation_stream(seed, c));
         });
         // END BOOK
@@ -201,8 +217,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
                 const std::uint64_t mutations = pixels / chain_count + (c < pixels % chain_count ? 1 : 0);
                 for (std::uint64_t m = 0; m < mutations; ++m) {
                     chain.samples.start_iteration();
-                    evaluate_path(scene, lights, bidirectional, chain.samples, arenas[static_cast<std::size_t>(thread)],
-                                  storage, chain.proposed);
+                    evaluate(chain, arenas[static_cast<std::size_t>(thread)], storage, chain.proposed);
                     chain.invalid += chain.proposed.invalid;
                     const float a = acceptance_probability(chain.current.value, chain.proposed.value);
                     // Half-buffers by chain: the chains are independent, the mutations of one are not.

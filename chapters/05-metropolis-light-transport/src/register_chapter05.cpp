@@ -14,6 +14,15 @@ void register_chapter05(Registry& registry) {
                                 s.max_depth = settings.max_depth;
                                 return std::make_unique<ch05::MetropolisLightTransport>(s);
                             });
+    registry.add_integrator("mlt-multiplexed", 5,
+                            "multiplexed Metropolis light transport: each state one path length and one bdpt strategy, "
+                            "chosen by the chain",
+                            [](const RenderSettings& settings) {
+                                ch05::MltSettings s;
+                                s.max_depth = settings.max_depth;
+                                s.multiplexed = true;
+                                return std::make_unique<ch05::MetropolisLightTransport>(s);
+                            });
 }
 
 }  // namespace freezeray

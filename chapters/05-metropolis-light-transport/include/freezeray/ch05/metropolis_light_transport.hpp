@@ -19,6 +19,9 @@ struct MltSettings {
     float sigma = 0.01f;                  // the small steps' standard deviation (pbrt-v3's default)
     std::uint64_t bootstrap_samples = 100000;
     int chains = 1000;
+    // Multiplexed MLT (Hachisuka, Kaplanyan and Dachsbacher 2014): a state is one path length
+    // and one strategy (s, t), chosen by the chain, instead of a whole bidirectional sample.
+    bool multiplexed = false;
 };
 
 // One bidirectional sample's contributions and its scalar value, the target function of the
@@ -37,6 +40,19 @@ struct PathContributions {
 // two numbers of the camera stream (anywhere on the film), then chapter 04's bidirectional_sample.
 void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
                    PrimarySamples& samples, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out);
+
+// Multiplexed MLT's state (Hachisuka et al. 2014; pbrt-v3, section 16.4): a path of `segments`
+// segments made by one strategy (s, t), s chosen by the camera stream's third number; its
+// contribution is that strategy's MIS-weighted estimate divided by the probability 1 / (segments
+// + 1) of choosing it. Nothing when the subpaths do not reach the lengths the strategy needs.
+void evaluate_multiplexed_path(const Scene& scene, const ch03::LightSampler& lights,
+                               const ch04::BidirectionalSettings& settings, int segments, PrimarySamples& samples,
+                               ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out);
+
+// The path length of bootstrap sample i in multiplexed MLT: every length 1 ... max_depth in turn.
+inline int multiplexed_segments(std::uint64_t index, int max_depth) {
+    return 1 + static_cast<int>(index % static_cast<std::uint64_t>(max_depth));
+}
 
 // The bootstrap (Veach 1997, section 11.3.1; pbrt-v3, section 16.4): independent samples whose
 // values estimate the normalisation b = the integral of I over primary sample space (the mean
