@@ -152,6 +152,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
     RenderResult result;
+    const std::string name = mlt.multiplexed ? "mlt-multiplexed" : "mlt";  // for its notes and warnings
     SplatFilm film(width, height);
     // --sample-offset gives another, independent render of the same seed (for `merge`): MLT has
     // no per-pixel sample indices, so the offset enters its seed.
@@ -160,7 +161,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
     const Bootstrap bootstrap = run_bootstrap(scene, lights, bidirectional, mlt, seed, threads);
     std::uint64_t done = 0;  // rounds: each is one mutation per pixel
     if (!(bootstrap.b > 0.0)) {
-        result.warnings.push_back("mlt: none of the " + std::to_string(mlt.bootstrap_samples) +
+        result.warnings.push_back(name + ": none of the " + std::to_string(mlt.bootstrap_samples) +
                                   " bootstrap paths carried light, so no chain can start: the image is black. The "
                                   "scene's lights may be unreachable from the camera, or too rare for the bootstrap "
                                   "to find (raise --mlt-bootstrap)");
@@ -268,11 +269,11 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
             result.invalid_samples += chain.invalid;
         }
         const auto rate = [](std::uint64_t a, std::uint64_t n) { return n > 0 ? 100.0 * a / n : 0.0; };
-        result.notes.push_back(format("mlt: acceptance %.1f %% of proposals (large steps %.1f %%, small steps %.1f %%)",
+        result.notes.push_back(name + format(": acceptance %.1f %% of proposals (large steps %.1f %%, small steps %.1f %%)",
                                       rate(accepted, proposed), rate(large_accepted, large_proposed),
                                       rate(accepted - large_accepted, proposed - large_proposed)));
     }
-    result.notes.push_back(format("mlt: bootstrap b = %.6g +- %.2g (mean image luminance) from %.0f paths", bootstrap.b,
+    result.notes.push_back(name + format(": bootstrap b = %.6g +- %.2g (mean image luminance) from %.0f paths", bootstrap.b,
                                   bootstrap.standard_error, static_cast<double>(mlt.bootstrap_samples)));
     result.image = film.mean();
     result.variance = film.variance_of_mean();
