@@ -6,6 +6,7 @@
 #include "freezeray/parallel.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/splat_batches.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -20,13 +21,6 @@ namespace {
 constexpr std::uint32_t SlotsPerWorkUnit = 64;
 // Work units traced before their splats are added: 65536 light paths, a few MB of splats.
 constexpr std::size_t UnitsPerRound = 1024;
-// As render_pixels: a target error is checked only once this many samples per pixel are done.
-constexpr std::uint64_t MinimumSamplesForErrorEstimate = 8;
-
-bool stop_requested(const RenderSettings& settings) {
-    return settings.stop_requested != nullptr && settings.stop_requested->load(std::memory_order_relaxed);
-}
-
 }  // namespace
 
 // BOOK(light-path-loop)
@@ -41,9 +35,6 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
     const int height = camera.height();
     const auto slots = static_cast<std::uint32_t>(width * height);
     const int threads = resolve_thread_count(settings.threads);
-    const bool by_time = settings.time_seconds > 0.0;
-    const bool by_error = settings.target_error > 0.0;
-    const std::uint64_t sample_cap = by_time ? UINT64_MAX : settings.samples_per_pixel;
 
     SplatFilm film(width, height, extra_layers);
     // Memory is bounded by one round of at most UnitsPerRound work units: one buffer per unit,
@@ -54,20 +45,10 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
     const std::size_t units_per_round = std::min(units, UnitsPerRound);
     std::vector<SplatBuffer> buffers(units_per_round, SplatBuffer(width, height));
     std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
-    auto start = std::chrono::steady_clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    progress.start("render", by_time ? 0 : sample_cap * slots, settings.time_seconds);
-
     RenderResult result;
-    std::uint64_t done = 0;  // batches (samples per pixel) added to the film
-    while (done < sample_cap) {
-        // A stop request ends the render between batches: the film only ever holds complete
-        // batches, so its sample count stays exact (a batch is one light path per pixel).
-        if (stop_requested(settings)) {
-            result.interrupted = true;
-            break;
-        }
-        const std::uint64_t sample = settings.first_sample + done;
+    SplatBatches batches(settings, progress, slots);
+    while (batches.next_batch(result)) {
+        const std::uint64_t sample = settings.first_sample + batches.batches();
         for (std::size_t first_unit = 0; first_unit < units; first_unit += units_per_round) {
             const std::size_t round = std::min(units_per_round, units - first_unit);
             parallel_for(round, threads, [&](std::size_t i, int thread) {
@@ -92,31 +73,9 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
             });
             for (std::size_t i = 0; i < round; ++i) film.add(buffers[i]);  // in work-unit order
         }
-        ++done;
-        const double estimate = film.estimated_relative_mse();
-        progress.set_estimated_error(estimate);
-        // Observers see the film at 1, 2, 4, ... samples per pixel (as render_pixels' passes),
-        // or after every batch when checkpoints ask for a bound on the time between calls.
-        const bool power_of_two = (done & (done - 1)) == 0;
-        if (settings.on_pass && (power_of_two || settings.max_pass_seconds > 0.0 || done == sample_cap)) {
-            const auto before = std::chrono::steady_clock::now();
-            settings.on_pass(film.to_film(done), done, elapsed());
-            start += std::chrono::steady_clock::now() - before;
-        }
-        if (stop_requested(settings)) result.interrupted = true;
-        if (result.interrupted || (by_time && elapsed() >= settings.time_seconds)) break;
-        if (by_error && done >= MinimumSamplesForErrorEstimate && estimate >= 0.0 && estimate <= settings.target_error)
-            break;
+        if (!batches.batch_done(film, result)) break;
     }
-    progress.finish();
-
-    result.image = film.mean();
-    result.variance = film.variance_of_mean();
-    result.samples_per_pixel = done;
-    result.seconds = elapsed();
-    result.invalid_samples = film.invalid_splat_count();
-    result.estimated_relative_mse = film.estimated_relative_mse();
-    result.film = std::make_shared<const Film>(film.to_film(done));
+    batches.finish(film, result);
     if (layers != nullptr) {
         layers->clear();
         for (int layer = 1; layer <= extra_layers; ++layer) layers->push_back(film.layer_mean(layer));

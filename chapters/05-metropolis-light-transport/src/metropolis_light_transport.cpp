@@ -6,6 +6,7 @@
 #include "freezeray/parallel.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/splat_batches.hpp"
 #include "freezeray/ch02/path_tracer.hpp"
 #include "freezeray/ch03/piecewise_constant.hpp"
 #include "freezeray/ch04/subpaths.hpp"
@@ -28,10 +29,6 @@ constexpr std::uint64_t BootstrapSamplesPerUnit = 256;
 PCG32 mutation_stream(std::uint64_t seed, std::uint64_t chain) { return make_chain_stream(seed, (1ULL << 62) + chain); }
 PCG32 acceptance_stream(std::uint64_t seed, std::uint64_t chain) { return make_chain_stream(seed, (1ULL << 61) + chain); }
 
-bool stop_requested(const RenderSettings& settings) {
-    return settings.stop_requested != nullptr && settings.stop_requested->load(std::memory_order_relaxed);
-}
-
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
     char text[256];
     std::snprintf(text, sizeof text, pattern, a, b, c, d);
@@ -53,9 +50,7 @@ struct Chain {
 
 PCG32 bootstrap_stream(std::uint64_t seed, std::uint64_t index) { return make_chain_stream(seed, index); }
 
-// BOOK(evaluate-path)
-void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
-                   PrimarySamples& samples, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out) {
+Vec2 start_path(const Scene& scene, PrimarySamples& samples, ScratchArena& arena, PathContributions& out) {
     out.splats.clear();
     out.value = 0.0f;
     out.invalid = 0;
@@ -63,8 +58,14 @@ void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const c
     // The film position is part of the state: a chain moves over the whole image.
     samples.start_stream(ch04::CameraStream);
     const PinholeCamera& camera = *scene.camera;
-    const Vec2 film(samples.next_float() * static_cast<float>(camera.width()),
-                    samples.next_float() * static_cast<float>(camera.height()));
+    return Vec2(samples.next_float() * static_cast<float>(camera.width()),
+                samples.next_float() * static_cast<float>(camera.height()));
+}
+
+// BOOK(evaluate-path)
+void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
+                   PrimarySamples& samples, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out) {
+    const Vec2 film = start_path(scene, samples, arena, out);
     ch04::bidirectional_sample(scene, lights, settings, film, samples, arena, storage,
                                [&](const ch04::BidirectionalContribution& c) {
                                    if (is_black(c.weighted)) return;
@@ -145,13 +146,9 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
     const int width = camera.width(), height = camera.height();
     const auto pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
     const int threads = resolve_thread_count(settings.threads);
-    const bool by_time = settings.time_seconds > 0.0;
-    const bool by_error = settings.target_error > 0.0;
-    const std::uint64_t round_cap = by_time ? UINT64_MAX : settings.samples_per_pixel;
-    auto start = std::chrono::steady_clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
     RenderResult result;
+    SplatBatches rounds(settings, progress, pixels);  // the bootstrap's time counts as render time
     const std::string name = mlt.multiplexed ? "mlt-multiplexed" : "mlt";  // for its notes and warnings
     SplatFilm film(width, height);
     // --sample-offset gives another, independent render of the same seed (for `merge`): MLT has
@@ -159,7 +156,6 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
     const std::uint64_t seed =
         settings.first_sample == 0 ? settings.seed : mix_bits(settings.seed ^ mix_bits(settings.first_sample));
     const Bootstrap bootstrap = run_bootstrap(scene, lights, bidirectional, mlt, seed, threads);
-    std::uint64_t done = 0;  // rounds: each is one mutation per pixel
     if (!(bootstrap.b > 0.0)) {
         result.warnings.push_back(name + ": none of the " + std::to_string(mlt.bootstrap_samples) +
                                   " bootstrap paths carried light, so no chain can start: the image is black. The "
@@ -204,12 +200,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
         // and the current state are splatted, weighted by a and 1 - a, each as c b / I.
         std::vector<SplatBuffer> buffers(chain_count, SplatBuffer(width, height));
         const double b = bootstrap.b;
-        progress.start("render", by_time ? 0 : round_cap * pixels, settings.time_seconds);
-        while (done < round_cap) {
-            if (stop_requested(settings)) {
-                result.interrupted = true;
-                break;
-            }
+        while (rounds.next_batch(result)) {
             parallel_for(chain_count, threads, [&](std::size_t c, int thread) {
                 thread_local ch04::SubpathStorage storage;
                 Chain& chain = chains[c];
@@ -244,21 +235,9 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
                 progress.advance(mutations);
             });
             for (const SplatBuffer& buffer : buffers) film.add(buffer);  // in chain order
-            ++done;
-            // END BOOK
-            const double estimate = film.estimated_relative_mse();
-            progress.set_estimated_error(estimate);
-            const bool power_of_two = (done & (done - 1)) == 0;
-            if (settings.on_pass && (power_of_two || settings.max_pass_seconds > 0.0 || done == round_cap)) {
-                const auto before = std::chrono::steady_clock::now();
-                settings.on_pass(film.to_film(done), done, elapsed());
-                start += std::chrono::steady_clock::now() - before;
-            }
-            if (stop_requested(settings)) result.interrupted = true;
-            if (result.interrupted || (by_time && elapsed() >= settings.time_seconds)) break;
-            if (by_error && done >= 8 && estimate >= 0.0 && estimate <= settings.target_error) break;
+            if (!rounds.batch_done(film, result)) break;
         }
-        progress.finish();
+        // END BOOK
 
         std::uint64_t proposed = 0, accepted = 0, large_proposed = 0, large_accepted = 0;
         for (const Chain& chain : chains) {
@@ -275,13 +254,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
     }
     result.notes.push_back(name + format(": bootstrap b = %.6g +- %.2g (mean image luminance) from %.0f paths", bootstrap.b,
                                   bootstrap.standard_error, static_cast<double>(mlt.bootstrap_samples)));
-    result.image = film.mean();
-    result.variance = film.variance_of_mean();
-    result.samples_per_pixel = done;
-    result.seconds = elapsed();
-    result.invalid_samples += film.invalid_splat_count();
-    result.estimated_relative_mse = film.estimated_relative_mse();
-    result.film = std::make_shared<const Film>(film.to_film(done));
+    rounds.finish(film, result);
     return result;
 }
 

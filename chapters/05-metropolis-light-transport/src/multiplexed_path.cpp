@@ -13,14 +13,7 @@ namespace freezeray::ch05 {
 void evaluate_multiplexed_path(const Scene& scene, const ch03::LightSampler& lights,
                                const ch04::BidirectionalSettings& settings, int segments, PrimarySamples& samples,
                                ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out) {
-    out.splats.clear();
-    out.value = 0.0f;
-    out.invalid = 0;
-    arena.reset();
-    samples.start_stream(ch04::CameraStream);
-    const PinholeCamera& camera = *scene.camera;
-    const Vec2 film(samples.next_float() * static_cast<float>(camera.width()),
-                    samples.next_float() * static_cast<float>(camera.height()));
+    const Vec2 film = start_path(scene, samples, arena, out);
     // The strategy: s light vertices, t = segments + 1 - s camera vertices, each of the
     // segments + 1 strategies with probability 1 / (segments + 1). Because the choice is a primary
     // sample, small steps move between neighbouring strategies too.
@@ -29,7 +22,8 @@ void evaluate_multiplexed_path(const Scene& scene, const ch03::LightSampler& lig
     const int t = strategies - s;
     storage.camera.resize(static_cast<std::size_t>(t));
     storage.light.resize(static_cast<std::size_t>(std::max(s, 1)));
-    if (ch04::camera_subpath(scene, camera.generate_ray(film), samples, arena, t, storage.camera.data()) != t) return;
+    if (ch04::camera_subpath(scene, scene.camera->generate_ray(film), samples, arena, t, storage.camera.data()) != t)
+        return;
     if (ch04::light_subpath(scene, lights, samples, arena, s, storage.light.data()) != s) return;
     samples.start_stream(ch04::ConnectionStream);
     const ch04::StrategyContribution c = ch04::connect_strategy(scene, lights, settings.heuristic, storage.light.data(), s,

@@ -36,6 +36,10 @@ struct PathContributions {
     std::uint64_t invalid = 0;  // NaN, Inf or negative contributions left out (a bug if any)
 };
 
+// Starts evaluating a state: clears `out` and the arena, starts the camera stream and returns the
+// film position its first two numbers give (anywhere on the film: chains roam the whole image).
+Vec2 start_path(const Scene& scene, PrimarySamples& samples, ScratchArena& arena, PathContributions& out);
+
 // Evaluates the bidirectional sample that `samples` describes: the film position from the first
 // two numbers of the camera stream (anywhere on the film), then chapter 04's bidirectional_sample.
 void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
