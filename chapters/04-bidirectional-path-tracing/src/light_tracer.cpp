@@ -19,6 +19,13 @@ float shading_normal_correction(const Vec3& wo, const Vec3& wi, const Vec3& shad
 }
 // END BOOK
 
+float adjoint_sample_factor(const BSDFSample& sample, const Vec3& wo, const Vec3& wi, const Vec3& shading_normal,
+                            const Vec3& geometric_normal) {
+    float factor = shading_normal_correction(wo, wi, shading_normal, geometric_normal);
+    if (has_flag(sample.flags, BSDF_Transmission)) factor *= sample.eta * sample.eta;
+    return factor;
+}
+
 // BOOK(connect-to-camera)
 std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit& hit, const BSDF& bsdf, const Frame& frame,
                                                   const Vec3& wo_world, const Spectrum& beta) {
@@ -29,7 +36,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit&
     // the path's own BSDF factor, so no eta^2 is needed here even for refraction: the adjoint
     // BSDF f*(a, b) = f(b, a) is what a light path uses (Veach 1997, section 5.2), and only a
     // BSDF *sampled* from the light's side, f(a, b), needs turning into f(b, a) (the eta^2 of
-    // trace_light_path).
+    // adjoint_sample_factor).
     const Vec3 to_camera = frame.to_local(camera->wi);
     const Spectrum f = bsdf.eval(to_camera, frame.to_local(wo_world));
     if (is_black(f)) return std::nullopt;
@@ -124,16 +131,12 @@ void LightTracer::trace_light_path(const Scene& scene, const ch03::LightSampler&
                 splats.add_splat(connection->raster_position, connection->value);
         if (segments + 2 > settings_.max_depth) break;
 
-        // Continue by sampling the BSDF from the light's side. The adjoint BSDF: the shading
-        // normal correction, and no 1 / eta^2 on refraction (radiance is compressed by it,
-        // importance is not; Veach 1997, section 5.2; pbrt-v3, section 16.1).
+        // Continue by sampling the BSDF from the light's side, weighted as the adjoint BSDF.
         const Vec2 u(random.next_float(), random.next_float());
         const std::optional<BSDFSample> sample = bsdf.sample(frame.to_local(wo_world), u, random.next_float());
         if (!sample || sample->pdf <= 0.0f) break;
         const Vec3 wi_world = frame.to_world(sample->wi);
-        float adjoint = shading_normal_correction(wo_world, wi_world, frame.n, hit->geometric_normal);
-        if (has_flag(sample->flags, BSDF_Transmission)) adjoint *= sample->eta * sample->eta;
-        scattering *= sample->weight() * adjoint;
+        scattering *= sample->weight() * adjoint_sample_factor(*sample, wo_world, wi_world, frame.n, hit->geometric_normal);
         if (is_black(scattering)) break;
 
         // Russian roulette on the scattering alone: the emitted part of the throughput is in

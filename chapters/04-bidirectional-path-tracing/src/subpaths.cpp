@@ -63,10 +63,8 @@ int random_walk(const Scene& scene, Ray ray, SampleStream& samples, ScratchArena
         if (!sample || sample->pdf <= 0.0f) break;
         const Vec3 wi_world = vertex.frame.to_world(sample->wi);
         Spectrum weight = sample->weight();
-        if (transport == Transport::Importance) {
-            weight *= shading_normal_correction(vertex.wo, wi_world, vertex.frame.n, hit->geometric_normal);
-            if (has_flag(sample->flags, BSDF_Transmission)) weight *= sample->eta * sample->eta;
-        }
+        if (transport == Transport::Importance)
+            weight *= adjoint_sample_factor(*sample, vertex.wo, wi_world, vertex.frame.n, hit->geometric_normal);
         beta *= weight;
         scattering *= weight;
         if (is_black(beta)) break;

@@ -28,6 +28,13 @@ struct CameraConnection {
 // geometric surface.
 float shading_normal_correction(const Vec3& wo, const Vec3& wi, const Vec3& shading_normal, const Vec3& geometric_normal);
 
+// The factor that turns the weight of a BSDF sample drawn from the light's side (wo towards the
+// light, wi the sampled direction, both in world space) into the adjoint BSDF's that a light
+// path carries: the shading-normal correction, and eta^2 on transmission (radiance is compressed
+// by refraction, importance is not; Veach 1997, section 5.2; pbrt-v3, section 16.1).
+float adjoint_sample_factor(const BSDFSample& sample, const Vec3& wo, const Vec3& wi, const Vec3& shading_normal,
+                            const Vec3& geometric_normal);
+
 // A conservative bound on the rounding error of a point interpolated on a triangle: a light
 // sample's origin has no Hit to carry one. Relative 2^-18, above float interpolation error
 // (about 7 ulp, pbrt-v3, section 3.9.4), so a ray spawned there cannot hit its own emitter.
