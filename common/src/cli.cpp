@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <iostream>
 
@@ -50,18 +51,62 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     if (scene.environment != nullptr) std::cout << ", one of them the environment";
     std::cout << ")\n";
     std::cout << "effects:\n" << scene.effects.describe();
-    // The best suited integrator this renderer has (a chapter in progress may not have its own yet).
-    std::string suggestion = scene.effects.suggested_integrator(registry.chapter());
-    for (int chapter = registry.chapter(); chapter >= 1; --chapter) {
-        const std::string candidate = scene.effects.suggested_integrator(chapter);
-        if (registry.has(CapabilityKind::Integrator, candidate.substr(0, candidate.find(' ')))) {
-            suggestion = candidate;
-            break;
-        }
-    }
-    std::cout << "suggested:  " << suggestion << "\n";
+    // The best suited integrator this renderer has.
+    const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry);
+    std::cout << "suggested:  " << (suggestion.name.empty() ? "none: " + suggestion.reason
+                                                             : suggestion.name + " (" + suggestion.reason + ")")
+              << "\n";
+    std::cout << "accelerator: " << scene.accelerator_name << "\n";
+    if (!scene.texture_layout.empty()) std::cout << "textures:   stored in the " << scene.texture_layout << " layout\n";
     return 0;
 }
+
+// The options the chapters declared, on one command: each stored in a slot of its type, turned
+// into OptionValues after parsing. `--help` lists them under their chapter.
+class ChapterOptions {
+public:
+    void declare(CLI::App& command, const std::vector<OptionDeclaration>& declarations) {
+        for (const OptionDeclaration& d : declarations) {
+            Slot& slot = slots_.emplace_back();
+            slot.declaration = &d;
+            const std::string group = "Options of chapter " + two_digit(d.chapter);
+            switch (d.type) {
+                case OptionType::Number: slot.option = command.add_option(d.flag, slot.number, d.help); break;
+                case OptionType::Integer: slot.option = command.add_option(d.flag, slot.integer, d.help); break;
+                case OptionType::Text: slot.option = command.add_option(d.flag, slot.text, d.help); break;
+                case OptionType::Flag: slot.option = command.add_flag(d.flag, slot.flag, d.help); break;
+            }
+            slot.option->group(group);
+        }
+    }
+
+    OptionValues values() const {
+        OptionValues values;
+        for (const Slot& slot : slots_) {
+            if (slot.option->count() == 0) continue;
+            const OptionDeclaration& d = *slot.declaration;
+            switch (d.type) {
+                case OptionType::Number: values.values[d.key] = slot.number; break;
+                case OptionType::Integer: values.values[d.key] = slot.integer; break;
+                case OptionType::Text: values.values[d.key] = slot.text; break;
+                case OptionType::Flag: values.values[d.key] = slot.flag; break;
+            }
+            values.flags[d.key] = d.flag;
+        }
+        return values;
+    }
+
+private:
+    struct Slot {
+        const OptionDeclaration* declaration = nullptr;
+        CLI::Option* option = nullptr;
+        double number = 0.0;
+        long long integer = 0;
+        std::string text;
+        bool flag = false;
+    };
+    std::deque<Slot> slots_;  // a deque: CLI11 keeps pointers to the slots' values
+};
 
 // Parses "x,y,width,height".
 CropRegion parse_crop(const std::string& text) {
@@ -105,7 +150,11 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--target-error", render.target_error,
                                "stop when the estimated relMSE falls below this (with --spp as a cap)");
     time->excludes(spp);
-    render_command->add_option("--accel", render.accelerator, "ray-intersection accelerator");
+    std::string accelerators;
+    for (const auto& e : registry.list(CapabilityKind::Accelerator)) accelerators += (accelerators.empty() ? "" : ", ") + e.name;
+    render_command->add_option("--accel", render.accelerator,
+                               "ray-intersection accelerator, one of: " + accelerators + " (default: the scene's, else " +
+                                   registry.default_accelerator() + ")");
     render_command->add_option("--threads", render.threads, "threads (default: every core)");
     render_command->add_option("--seed", render.seed, "random seed (default: the scene's)");
     render_command->add_option("--max-depth", render.max_depth, "maximum path length in segments");
@@ -118,16 +167,9 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--checkpoint", render.checkpoint_seconds,
                                "write the image and OUT.state atomically every this many seconds");
     render_command->add_option("--resume", render.resume, "continue the render saved in this .state file");
-    render_command->add_option("--bdpt-strategies", render.strategy_images,
-                               "write each strategy's image, weighted and unweighted, and their grids into this folder "
-                               "(bidirectional path tracing)");
-    render_command->add_option("--mlt-large-step", render.mlt_large_step,
-                               "mlt: the probability of a large step (default 0.3)");
-    render_command->add_option("--mlt-sigma", render.mlt_sigma,
-                               "mlt: the standard deviation of a small step in primary sample space (default 0.01)");
-    render_command->add_option("--mlt-bootstrap", render.mlt_bootstrap, "mlt: the number of bootstrap paths (default 100000)");
-    render_command->add_option("--mlt-chains", render.mlt_chains, "mlt: the number of Markov chains (default 1000)");
     render_command->add_flag("--quiet", render.quiet, "no progress line");
+    ChapterOptions chapter_options;
+    chapter_options.declare(*render_command, registry.options());
 
     std::string info_scene;
     CLI::App* info_command = app.add_subcommand("info", "what a scene contains and which effects it calls for");
@@ -170,6 +212,7 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
 
     try {
         render.spp_given = spp->count() > 0;
+        render.chapter_options = chapter_options.values();
         if (*render_command) return run_render(render, registry);
         if (*info_command) return run_info(info_scene, registry);
         if (*merge_command) return run_merge(merge_out, merge_inputs, merge_quiet);

@@ -16,7 +16,7 @@ struct RenderOptions {
     bool spp_given = false;
     double time_seconds = 0.0;
     double target_error = 0.0;
-    std::string accelerator = "bruteforce";
+    std::string accelerator;  // empty: the scene's, else the renderer's default
     int threads = 0;
     long long seed = -1;
     long long sample_offset = 0;
@@ -27,11 +27,7 @@ struct RenderOptions {
     float exposure = 0.0f;
     double checkpoint_seconds = 0.0;
     std::string resume;
-    std::string strategy_images;  // --bdpt-strategies: a folder for per-strategy images
-    double mlt_large_step = 0.0;  // --mlt-large-step (0: the integrator's default)
-    double mlt_sigma = 0.0;       // --mlt-sigma
-    long long mlt_bootstrap = 0;  // --mlt-bootstrap
-    int mlt_chains = 0;           // --mlt-chains
+    OptionValues chapter_options;  // the options the chapters declared (options.hpp)
     bool quiet = false;
 };
 

@@ -64,8 +64,9 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     settings.seed = request.seed;
     settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
     std::vector<std::unique_ptr<Integrator>> integrators;
+    const auto options = integrator_options(scene, OptionValues{}, registry);  // the scene's "render" block
     for (const std::string& name : request.integrators) {
-        integrators.push_back(registry.make_integrator(name, settings, "--integrators"));
+        integrators.push_back(registry.make_integrator(name, settings, "--integrators", &options->parameters()));
         const std::string warning = unreachable_lights_warning(scene, *integrators.back(), name);
         if (!warning.empty() && !request.quiet) std::cerr << "warning: " << warning << "\n";
     }

@@ -28,7 +28,10 @@ Parameters::Parameters(const nlohmann::json& json, std::string file, std::string
 }
 
 std::string Parameters::where() const { return file_ + ": " + (path_.empty() ? "/" : path_); }
-std::string Parameters::where(const std::string& key) const { return file_ + ": " + path_ + "/" + key; }
+std::string Parameters::where(const std::string& key) const {
+    const auto it = locations_.find(key);
+    return it != locations_.end() ? it->second : file_ + ": " + path_ + "/" + key;
+}
 
 const nlohmann::json* Parameters::find(const std::string& key) const {
     asked_.insert(key);
@@ -61,6 +64,16 @@ int Parameters::get_int(const std::string& key, int fallback) const {
     const auto value = j->get<long long>();
     if (value < INT32_MIN || value > INT32_MAX) throw InputError(where(key), "the number is out of range");
     return static_cast<int>(value);
+}
+
+long long Parameters::get_long(const std::string& key, long long fallback) const {
+    const nlohmann::json* j = find(key);
+    if (!j) return fallback;
+    if (!j->is_number_integer())
+        throw InputError(where(key), std::string("expected a whole number, found ") + json_type_name(*j));
+    if (j->is_number_unsigned() && j->get<unsigned long long>() > static_cast<unsigned long long>(INT64_MAX))
+        throw InputError(where(key), "the number is out of range");
+    return j->get<long long>();
 }
 
 bool Parameters::get_bool(const std::string& key, bool fallback) const {

@@ -1,10 +1,10 @@
-// The registry, and the course catalogue used for "introduced in chapter N" messages.
+// The registry of capabilities by name.
 #include "freezeray/registry.hpp"
 
 #include "freezeray/error.hpp"
-#include "freezeray/lambertian.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <numeric>
 
 namespace freezeray {
@@ -18,51 +18,6 @@ const char* capability_kind_name(CapabilityKind kind) {
         case CapabilityKind::TextureLayout: return "texture layout";
     }
     return "capability";
-}
-
-// Every name the course introduces, with its chapter, including chapters a renderer may have
-// been built without. A chapter that adds a capability adds its line here too.
-int chapter_introducing(CapabilityKind kind, const std::string& name) {
-    struct Known {
-        CapabilityKind kind;
-        const char* name;
-        int chapter;
-    };
-    static const Known catalogue[] = {
-        {CapabilityKind::Integrator, "pt-naive", 1},
-        {CapabilityKind::Material, "diffuse", 1},
-        {CapabilityKind::Accelerator, "bruteforce", 1},
-        {CapabilityKind::Integrator, "pt-is", 2},
-        {CapabilityKind::Material, "mirror", 2},
-        {CapabilityKind::Material, "conductor", 2},
-        {CapabilityKind::Material, "roughconductor", 2},
-        {CapabilityKind::Material, "dielectric", 2},
-        {CapabilityKind::Material, "roughdielectric", 2},
-        {CapabilityKind::Material, "plastic", 2},
-        {CapabilityKind::Material, "roughplastic", 2},
-        {CapabilityKind::Material, "mix", 2},
-        {CapabilityKind::TextureLayout, "linear", 2},
-        {CapabilityKind::Integrator, "pt-nee", 3},
-        {CapabilityKind::Integrator, "pt-nee-uniform", 3},
-        {CapabilityKind::Integrator, "pt-mis", 3},
-        {CapabilityKind::Integrator, "pt-mis-balance", 3},
-        {CapabilityKind::Integrator, "pt-mis-uniform", 3},
-        {CapabilityKind::Light, "area", 3},
-        {CapabilityKind::Light, "point", 3},
-        {CapabilityKind::Light, "spot", 3},
-        {CapabilityKind::Light, "directional", 3},
-        {CapabilityKind::Light, "environment", 3},
-        {CapabilityKind::Light, "constant", 3},
-        {CapabilityKind::Integrator, "bdpt", 4},
-        {CapabilityKind::Integrator, "light-tracing", 4},
-        {CapabilityKind::Integrator, "mlt", 5},
-        {CapabilityKind::Accelerator, "kdtree", 6},
-        {CapabilityKind::Accelerator, "kdtree-simd", 7},
-        {CapabilityKind::TextureLayout, "tiled", 8},
-    };
-    for (const Known& k : catalogue)
-        if (k.kind == kind && name == k.name) return k.chapter;
-    return 0;
 }
 
 std::string nearest_name(const std::string& name, const std::vector<std::string>& candidates) {
@@ -97,30 +52,60 @@ std::string nearest_name(const std::string& name, const std::vector<std::string>
 }
 
 Registry::Registry(std::string program, int chapter) : program_(std::move(program)), chapter_(chapter) {
-    add_material("diffuse", 1, "Lambertian reflector: albedo (MTL Kd)", [](const Parameters& p) {
-        const Spectrum albedo = p.get_spectrum("albedo", Spectrum(0.5f));
-        for (int c = 0; c < 3; ++c) p.check_range("albedo", albedo[c], 0.0f, 1.0f);
-        return std::make_unique<DiffuseMaterial>(albedo);
-    });
     add_accelerator("bruteforce", 1, "every triangle of every mesh whose bounding box the ray meets",
-                    [] { return std::make_unique<BruteForceAccelerator>(); });
+                    [](const Parameters&) { return std::make_unique<BruteForceAccelerator>(); });
 }
 
+namespace {
+
+// Adds or replaces `name` in `map`; a replaced entry keeps the chapter that introduced the name
+// (chapter 02's cosine-sampled "diffuse" replaces chapter 01's, which introduced it).
+template <typename Factory>
+void add_entry(std::map<std::string, std::pair<Registry::Entry, Factory>>& map, const std::string& name, int chapter,
+               const std::string& summary, Factory factory) {
+    const auto existing = map.find(name);
+    const int introduced = existing != map.end() ? existing->second.first.chapter : chapter;
+    map[name] = {Registry::Entry{name, introduced, summary}, std::move(factory)};
+}
+
+}  // namespace
+
 void Registry::add_integrator(const std::string& name, int chapter, const std::string& summary, IntegratorFactory f) {
-    integrators_[name] = {Entry{name, chapter, summary}, std::move(f)};
+    add_entry(integrators_, name, chapter, summary, std::move(f));
 }
 void Registry::add_material(const std::string& name, int chapter, const std::string& summary, MaterialFactory f) {
-    materials_[name] = {Entry{name, chapter, summary}, std::move(f)};
+    add_entry(materials_, name, chapter, summary, std::move(f));
 }
 void Registry::add_accelerator(const std::string& name, int chapter, const std::string& summary, AcceleratorFactory f) {
-    accelerators_[name] = {Entry{name, chapter, summary}, std::move(f)};
+    add_entry(accelerators_, name, chapter, summary, std::move(f));
 }
 
 void Registry::add_light(const std::string& name, int chapter, const std::string& summary, LightFactory f) {
-    lights_[name] = {Entry{name, chapter, summary}, std::move(f)};
+    add_entry(lights_, name, chapter, summary, std::move(f));
 }
 void Registry::add_area_light(int chapter, const std::string& summary, AreaLightFactory f) {
     area_light_ = {Entry{"area", chapter, summary}, std::move(f)};
+}
+void Registry::add_texture_layout(const std::string& name, int chapter, const std::string& summary,
+                                  TextureLayoutFactory f) {
+    add_entry(texture_layouts_, name, chapter, summary, std::move(f));
+    if (default_texture_layout_.empty()) default_texture_layout_ = name;
+}
+
+void Registry::add_option(OptionDeclaration option) {
+    for (const OptionDeclaration& o : options_)
+        if (o.flag == option.flag || (o.key == option.key && o.target == option.target))
+            throw std::logic_error("option " + option.flag + " is declared twice");
+    options_.push_back(std::move(option));
+}
+
+void Registry::set_default_accelerator(const std::string& name) {
+    if (!accelerators_.count(name)) throw std::logic_error("default accelerator '" + name + "' is not registered");
+    default_accelerator_ = name;
+}
+void Registry::set_default_texture_layout(const std::string& name) {
+    if (!texture_layouts_.count(name)) throw std::logic_error("default texture layout '" + name + "' is not registered");
+    default_texture_layout_ = name;
 }
 
 bool Registry::has(CapabilityKind kind, const std::string& name) const {
@@ -129,8 +114,12 @@ bool Registry::has(CapabilityKind kind, const std::string& name) const {
         case CapabilityKind::Material: return materials_.count(name) > 0;
         case CapabilityKind::Accelerator: return accelerators_.count(name) > 0;
         case CapabilityKind::Light: return lights_.count(name) > 0 || (name == "area" && area_light_.has_value());
-        default: return false;
+        case CapabilityKind::TextureLayout: return texture_layouts_.count(name) > 0;
     }
+}
+
+void Registry::require(CapabilityKind kind, const std::string& name, const std::string& where) const {
+    if (!has(kind, name)) unknown(kind, name, where);
 }
 
 std::vector<Registry::Entry> Registry::list(CapabilityKind kind) const {
@@ -141,12 +130,22 @@ std::vector<Registry::Entry> Registry::list(CapabilityKind kind) const {
     if (kind == CapabilityKind::Integrator) collect(integrators_);
     if (kind == CapabilityKind::Material) collect(materials_);
     if (kind == CapabilityKind::Accelerator) collect(accelerators_);
+    if (kind == CapabilityKind::TextureLayout) collect(texture_layouts_);
     if (kind == CapabilityKind::Light) {
         collect(lights_);
         if (area_light_) entries.push_back(area_light_->first);
         std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.name < b.name; });
     }
     return entries;
+}
+
+void Registry::set_catalogue(const std::vector<CatalogueEntry>& catalogue) { catalogue_ = &catalogue; }
+
+int Registry::chapter_introducing(CapabilityKind kind, const std::string& name) const {
+    if (catalogue_ == nullptr) return 0;
+    for (const CatalogueEntry& entry : *catalogue_)
+        if (entry.kind == kind && name == entry.name) return entry.chapter;
+    return 0;
 }
 
 void Registry::unknown(CapabilityKind kind, const std::string& name, const std::string& where) const {
@@ -167,23 +166,47 @@ void Registry::unknown(CapabilityKind kind, const std::string& name, const std::
     throw InputError(where, message);
 }
 
+namespace {
+
+// The parameters of a capability made without any: every setting at its default.
+const Parameters& no_parameters() {
+    static const nlohmann::json empty = nlohmann::json::object();
+    static const Parameters parameters(empty, "(defaults)", "", ".");
+    return parameters;
+}
+
+}  // namespace
+
 std::unique_ptr<Integrator> Registry::make_integrator(const std::string& name, const RenderSettings& settings,
-                                                      const std::string& where) const {
+                                                      const std::string& where, const Parameters* options) const {
     const auto it = integrators_.find(name);
     if (it == integrators_.end()) unknown(CapabilityKind::Integrator, name, where);
-    return it->second.second(settings);
+    return it->second.second(settings, options != nullptr ? *options : no_parameters());
 }
 
 std::unique_ptr<Material> Registry::make_material(const std::string& type, const Parameters& parameters) const {
-    const auto it = materials_.find(type);
-    if (it == materials_.end()) unknown(CapabilityKind::Material, type, parameters.where("type"));
-    return it->second.second(parameters);
+    return make_material(type, parameters, MaterialContext{*this, default_texture_layout_});
 }
 
-std::unique_ptr<Accelerator> Registry::make_accelerator(const std::string& name, const std::string& where) const {
+std::unique_ptr<Material> Registry::make_material(const std::string& type, const Parameters& parameters,
+                                                  const MaterialContext& context) const {
+    const auto it = materials_.find(type);
+    if (it == materials_.end()) unknown(CapabilityKind::Material, type, parameters.where("type"));
+    return it->second.second(parameters, context);
+}
+
+std::unique_ptr<Accelerator> Registry::make_accelerator(const std::string& name, const std::string& where,
+                                                        const Parameters* options) const {
     const auto it = accelerators_.find(name);
     if (it == accelerators_.end()) unknown(CapabilityKind::Accelerator, name, where);
-    return it->second.second();
+    return it->second.second(options != nullptr ? *options : no_parameters());
+}
+
+std::shared_ptr<const TextureStorage> Registry::make_texture_storage(const std::string& layout, const Image& image,
+                                                                     const std::string& where) const {
+    const auto it = texture_layouts_.find(layout);
+    if (it == texture_layouts_.end()) unknown(CapabilityKind::TextureLayout, layout, where);
+    return it->second.second(image);
 }
 
 std::unique_ptr<Light> Registry::make_light(const std::string& type, const Parameters& parameters) const {

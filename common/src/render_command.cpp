@@ -27,16 +27,11 @@ std::string unreachable_lights_warning(const Scene& scene, const Integrator& int
 
 namespace {
 
-// The integrator for a render that names none: the one the scene's effects call for, if this
-// renderer has it, else the best suited one of an earlier chapter (a chapter may be in progress:
-// chapter 04's `bdpt` is suggested before it exists), else the first registered.
+// The integrator for a render that names none: the registered one the scene's effects call for,
+// else the first registered.
 std::string default_integrator(const Scene& scene, const Registry& registry) {
-    for (int chapter = registry.chapter(); chapter >= 1; --chapter) {
-        const std::string suggestion = scene.effects.suggested_integrator(chapter);
-        const std::string name = suggestion.substr(0, suggestion.find(' '));
-        if (registry.has(CapabilityKind::Integrator, name)) return name;
-    }
-    return registry.list(CapabilityKind::Integrator).front().name;
+    const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry);
+    return !suggestion.name.empty() ? suggestion.name : registry.list(CapabilityKind::Integrator).front().name;
 }
 
 // Set by the first SIGINT or SIGTERM: the render stops after its current tiles and writes what
@@ -77,13 +72,6 @@ void check_render_options(const RenderOptions& o) {
     if (o.seed < -1) throw InputError("--seed", "must not be negative");
     if (o.sample_offset < 0) throw InputError("--sample-offset", "must not be negative");
     if (o.checkpoint_seconds < 0.0) throw InputError("--checkpoint", "must be positive (seconds between checkpoints)");
-    if (o.mlt_large_step < 0.0 || o.mlt_large_step > 1.0 || !std::isfinite(o.mlt_large_step))
-        throw InputError("--mlt-large-step", "must be a probability in (0, 1]");
-    if (o.mlt_sigma < 0.0 || o.mlt_sigma > 1.0 || !std::isfinite(o.mlt_sigma))
-        throw InputError("--mlt-sigma", "must be in (0, 1] (a step in primary sample space, whose side is 1)");
-    if (o.mlt_bootstrap < 0 || o.mlt_bootstrap > (1LL << 32))
-        throw InputError("--mlt-bootstrap", "must be between 1 and 2^32");
-    if (o.mlt_chains < 0 || o.mlt_chains > (1 << 20)) throw InputError("--mlt-chains", "must be between 1 and 2^20");
 }
 
 std::string default_output_path(const std::string& scene_path, const std::string& integrator) {
@@ -118,6 +106,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     check_render_options(options);
     SceneLoadOptions load;
     load.accelerator = options.accelerator;
+    load.options = options.chapter_options;
     load.width = options.width;
     load.height = options.height;
     Scene scene = load_scene(options.scene, registry, load);
@@ -132,44 +121,25 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     settings.seed = options.seed >= 0 ? static_cast<std::uint64_t>(options.seed) : scene.defaults.seed;
     settings.first_sample = static_cast<std::uint64_t>(options.sample_offset);
     settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.defaults.max_depth;
-    settings.mlt_large_step_probability = options.mlt_large_step;
-    settings.mlt_sigma = options.mlt_sigma;
-    settings.mlt_bootstrap_samples = static_cast<std::uint64_t>(options.mlt_bootstrap);
-    settings.mlt_chains = options.mlt_chains;
 
     std::string integrator_name = options.integrator;
     if (integrator_name.empty()) integrator_name = scene.defaults.integrator;
     if (integrator_name.empty()) integrator_name = default_integrator(scene, registry);
-    const auto integrator = registry.make_integrator(integrator_name, settings, "--integrator");
+    registry.require(CapabilityKind::Integrator, integrator_name, "--integrator");
+    check_options_apply(options.chapter_options, registry.options(), OptionTarget::Integrator, integrator_name);
+    const auto chapter_options = integrator_options(scene, options.chapter_options, registry);
+    const auto integrator = registry.make_integrator(integrator_name, settings, "--integrator", &chapter_options->parameters());
     if (const std::string w = unreachable_lights_warning(scene, *integrator, integrator_name); !w.empty())
         std::cerr << "warning: " << w << "\n";
 
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after
-    if (!options.strategy_images.empty()) {
-        if (!integrator->has_strategy_images())
-            throw InputError("--bdpt-strategies", integrator_name + " has no strategies to write apart; use bdpt or bdpt-balance");
-        // The folder is made after the render (nothing is left behind by a failed one); before
-        // it, check that it, or the folder that will hold it, takes files.
-        const std::filesystem::path folder(options.strategy_images);
-        std::error_code error;
-        if (std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
-            throw InputError("--bdpt-strategies", options.strategy_images + " is a file, not a folder");
-        std::filesystem::path probe = folder / "grid-weighted.png";
-        if (!std::filesystem::exists(folder, error)) {  // the nearest folder that exists will hold it
-            std::filesystem::path parent = folder;
-            do parent = parent.has_parent_path() ? parent.parent_path() : std::filesystem::path(".");
-            while (!std::filesystem::exists(parent, error) && parent != ".");
-            probe = parent / "strategy-images-probe.png";
-        }
-        check_image_writable(probe.string());
-        settings.strategy_images = true;
-    }
     const RenderStateInfo info{options.scene, integrator_name, settings.seed, settings.first_sample, settings.max_depth,
                                scene.camera->width(), scene.camera->height()};
     if (!options.resume.empty()) {
         if (!integrator->resumable())
-            throw InputError("--resume", integrator_name + " splats onto the film and cannot be resumed exactly; render "
+            throw InputError("--resume", integrator_name + " cannot be resumed exactly (its film is not a per-pixel sample count that "
+                                         "a pass can go on from); render "
                                          "more samples with another --seed or --sample-offset and `merge` the renders");
         const RenderState saved = read_render_state(options.resume);
         check_resumable(saved.info, info);
@@ -204,13 +174,14 @@ int run_render(const RenderOptions& options, const Registry& registry) {
 
     write_image(out, annotated_image(*result.film, info, result.seconds, result.interrupted), {options.exposure});
     if (!result.extra_images.empty()) {
+        // The integrator's own option chose the folder and checked it before the render.
         std::error_code error;
-        std::filesystem::create_directories(options.strategy_images, error);
+        std::filesystem::create_directories(result.extra_images_folder, error);
         if (error)
-            throw InputError("--bdpt-strategies", "cannot create the folder " + options.strategy_images + ": " + error.message());
+            throw InputError(result.extra_images_folder, "cannot create the folder: " + error.message());
     }
     for (const auto& [name, image] : result.extra_images)
-        write_image((std::filesystem::path(options.strategy_images) / name).string(), image, {options.exposure});
+        write_image((std::filesystem::path(result.extra_images_folder) / name).string(), image, {options.exposure});
     if (result.interrupted || options.checkpoint_seconds > 0.0) write_render_state(state_path_for(out), info, *result.film);
     for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
     if (!options.quiet)

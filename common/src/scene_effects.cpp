@@ -2,9 +2,11 @@
 #include "freezeray/scene_effects.hpp"
 
 #include "freezeray/bsdf.hpp"
+#include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
 
 #include <set>
+#include <vector>
 
 namespace freezeray {
 
@@ -43,15 +45,21 @@ std::string SceneEffects::describe() const {
     return text;
 }
 
-std::string SceneEffects::suggested_integrator(int chapter) const {
-    if (!area_emitters && !environment && !delta_lights) return "none: the scene has no light and renders black";
-    if (chapter >= 4 && (specular || transmission) && (area_emitters || delta_lights))
-        return "bdpt (caustics through specular surfaces are found from the light side)";
-    if (chapter >= 3) return "pt-mis (light and BSDF sampling combined)";
-    if (delta_lights) return "none before chapter 03: point, spot and directional lights are found only by light sampling";
-    if (chapter >= 2) return "pt-is (BSDF importance sampling)";
-    if (specular) return "pt-naive renders specular surfaces black; importance sampling comes in chapter 02";
-    return "pt-naive (the only integrator of chapter 01)";
+IntegratorSuggestion SceneEffects::suggest_integrator(const Registry& registry) const {
+    if (!area_emitters && !environment && !delta_lights) return {"", "the scene has no light and renders black"};
+    // The candidates, best first; the first one the renderer has is the suggestion.
+    std::vector<IntegratorSuggestion> candidates;
+    if ((specular || transmission) && (area_emitters || delta_lights))
+        candidates.push_back({"bdpt", "caustics through specular surfaces are found from the light side"});
+    candidates.push_back({"pt-mis", "light and BSDF sampling combined"});
+    if (!delta_lights) {
+        candidates.push_back({"pt-is", "BSDF importance sampling"});
+        candidates.push_back({"pt-naive", specular ? "renders specular surfaces black; importance sampling comes in chapter 02"
+                                                   : "the only integrator of chapter 01"});
+    }
+    for (const IntegratorSuggestion& candidate : candidates)
+        if (registry.has(CapabilityKind::Integrator, candidate.name)) return candidate;
+    return {"", "point, spot and directional lights are found only by light sampling, which comes in chapter 03"};
 }
 
 }  // namespace freezeray

@@ -143,13 +143,13 @@ Mat4 read_transform(const Parameters& p, std::vector<std::string>& warnings) {
 // Builds one material from its JSON description through the registry.
 std::unique_ptr<Material> build_material(const std::string& name, const nlohmann::json& description,
                                          const std::string& file, const std::string& path,
-                                         const std::string& base_directory, const Registry& registry,
+                                         const std::string& base_directory, const MaterialContext& context,
                                          std::vector<std::string>& warnings) {
     const Parameters p(description, file, path, base_directory);
     const std::string type = p.require_string("type");
     const Spectrum emission = p.get_spectrum("emission", Spectrum(0.0f));
     for (int c = 0; c < 3; ++c) p.check_range("emission", emission[c], 0.0f, 1e30f);
-    std::unique_ptr<Material> material = registry.make_material(type, p);
+    std::unique_ptr<Material> material = context.registry.make_material(type, p, context);
     material->name = name;
     material->type = type;
     material->emission = emission;
@@ -204,6 +204,20 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     if (options.height > 0) scene.camera_description.height = options.height;
     scene.camera.emplace(scene.camera_description);
 
+    // The layout image textures are stored in: the command line's, else the "textures" block's,
+    // else the renderer's default (none before chapter 02, which has no image textures).
+    scene.texture_layout = registry.default_texture_layout();
+    {
+        const nlohmann::json* block = top.has("textures") ? &root.at("textures") : nullptr;
+        const OptionParameters textures(block, path, "/textures", base, options.options, registry.options(),
+                                        OptionTarget::Textures);
+        const Parameters& t = textures.parameters();
+        scene.texture_layout = t.get_string("layout", scene.texture_layout);
+        if (t.has("layout")) registry.require(CapabilityKind::TextureLayout, scene.texture_layout, t.where("layout"));
+        for (std::string& w : t.unused_key_warnings()) scene.warnings.push_back(std::move(w));
+    }
+    const MaterialContext material_context{registry, scene.texture_layout};
+
     // Material overrides by name: {"name": {...}}; with a "type" they replace the MTL
     // material, without one they change some of its parameters.
     const nlohmann::json no_overrides = nlohmann::json::object();
@@ -222,7 +236,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
             json_path = "/materials/" + name;
             overrides_used.insert(name);
         }
-        scene.materials.push_back(build_material(name, description, file, json_path, base, registry, scene.warnings));
+        scene.materials.push_back(build_material(name, description, file, json_path, base, material_context, scene.warnings));
         material_index[name] = static_cast<std::uint32_t>(scene.materials.size() - 1);
         return material_index[name];
     };
@@ -287,6 +301,10 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         scene.defaults.max_depth = r.get_int("max_depth", 0);
         if (scene.defaults.max_depth < 0) throw InputError(r.where("max_depth"), "must not be negative");
         scene.defaults.seed = static_cast<std::uint64_t>(r.get_int("seed", 0));
+        // The keys of the integrators' options go to the integrator's factory, which checks them.
+        for (const OptionDeclaration& d : registry.options())
+            if (d.target == OptionTarget::Integrator && r.has(d.key))
+                scene.defaults.integrator_options[d.key] = r.json().at(d.key);
         for (std::string& w : r.unused_key_warnings()) scene.warnings.push_back(std::move(w));
     }
 
@@ -314,10 +332,36 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         scene.lights[i]->index = static_cast<std::uint32_t>(i);
         scene.lights[i]->preprocess(scene.bounds);
     }
-    scene.accelerator = registry.make_accelerator(options.accelerator, "--accel");
+    // The accelerator: the command line's, else the "accelerator" block's type, else the default.
+    // The block's other keys are its settings, and apply only to the type it names.
+    const nlohmann::json* block = top.has("accelerator") ? &root.at("accelerator") : nullptr;
+    std::string block_type;
+    if (block != nullptr) {
+        const Parameters a = top.child("accelerator");
+        block_type = a.get_string("type", "");
+    }
+    scene.accelerator_name = !options.accelerator.empty() ? options.accelerator
+                             : !block_type.empty()        ? block_type
+                                                          : registry.default_accelerator();
+    const std::string accelerator_where = !options.accelerator.empty() ? "--accel" : !block_type.empty() ? top.where("accelerator") + "/type" : "default accelerator";
+    registry.require(CapabilityKind::Accelerator, scene.accelerator_name, accelerator_where);
+    check_options_apply(options.options, registry.options(), OptionTarget::Accelerator, scene.accelerator_name);
+    const bool block_applies = block != nullptr && (block_type.empty() || block_type == scene.accelerator_name);
+    const OptionParameters accelerator_options(block_applies ? block : nullptr, path, "/accelerator", base, options.options,
+                                               registry.options(), OptionTarget::Accelerator);
+    accelerator_options.parameters().get_string("type", "");
+    scene.accelerator = registry.make_accelerator(scene.accelerator_name, accelerator_where, &accelerator_options.parameters());
+    for (std::string& w : accelerator_options.parameters().unused_key_warnings()) scene.warnings.push_back(std::move(w));
     scene.accelerator->build(scene.meshes);
     scene.effects = compute_scene_effects(scene);
     return scene;
+}
+
+std::unique_ptr<OptionParameters> integrator_options(const Scene& scene, const OptionValues& given,
+                                                    const Registry& registry) {
+    const std::string base = std::filesystem::path(scene.file).parent_path().string();
+    return std::make_unique<OptionParameters>(&scene.defaults.integrator_options, scene.file, "/render", base, given,
+                                              registry.options(), OptionTarget::Integrator);
 }
 
 }  // namespace freezeray

@@ -24,7 +24,7 @@ sys.modules["book"] = book  # dataclasses look their module up by name
 spec.loader.exec_module(book)
 
 WARPS_CPP = """\
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 namespace freezeray {
 

@@ -1,6 +1,6 @@
 // Every warp of common/warps.hpp against its own density (chi-square goodness of fit).
-#include "freezeray/lambertian.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/lambertian.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include "chi_square.hpp"
 #include "evidence.hpp"
@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 using namespace freezeray;
+using namespace freezeray::ch01;
 
 namespace {
 

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # Bad input to the renderer: every case must exit non-zero, print a message naming the file and
 # the place, and leave no output file behind.
-# Usage: bad_input.sh RENDERER SOURCE_DIR
+# Usage: bad_input.sh RENDERER SOURCE_DIR COMPLETE_RENDERER
+# (RENDERER is chapter 01's; the options of later chapters are tried on COMPLETE_RENDERER.)
 set -u
 renderer=$1
 source_dir=$2
+complete_renderer=$3
+chapter01_renderer=$renderer
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -67,8 +70,25 @@ expect_failure "texture that does not exist" "textured.mtl:3" "no-such-texture.p
 expect_failure "negative sample count" "--spp" -- render "$work/good.json" --spp -5 --out "$work/out.png"
 expect_failure "zero sample count" "--spp" -- render "$work/good.json" --spp 0 --out "$work/out.png"
 expect_failure "unknown integrator" "--integrator" "pt-nope" -- render "$work/good.json" --integrator pt-nope --out "$work/out.png"
-expect_failure "large-step probability out of range" "--mlt-large-step" "probability" -- render "$work/good.json" --mlt-large-step 2 --out "$work/out.png"
-expect_failure "negative small-step size" "--mlt-sigma" -- render "$work/good.json" --mlt-sigma -0.1 --out "$work/out.png"
+# The options a later chapter declares: chapter 01's renderer does not know them; the complete
+# renderer checks them (on the command line and in the scene's "render" block) and refuses them
+# for an integrator that does not read them.
+expect_failure "an option of a later chapter" "--mlt-sigma" -- render "$work/good.json" --mlt-sigma 0.1 --out "$work/out.png"
+renderer=$complete_renderer
+expect_failure "large-step probability out of range" "--mlt-large-step" "probability" -- render "$work/good.json" --integrator mlt --mlt-large-step 2 --out "$work/out.png"
+expect_failure "negative small-step size" "--mlt-sigma" "(0, 1]" -- render "$work/good.json" --integrator mlt --mlt-sigma -0.1 --out "$work/out.png"
+expect_failure "chain count that is not a whole number" "--mlt-chains" -- render "$work/good.json" --integrator mlt --mlt-chains 1.5 --out "$work/out.png"
+expect_failure "an option the integrator does not read" "--mlt-sigma" "is an option of mlt, mlt-multiplexed" "pt-mis" -- render "$work/good.json" --integrator pt-mis --mlt-sigma 0.1 --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"render\": {\"mlt_sigma\": 5} }" > "$work/bad-mlt-option.json"
+expect_failure "an integrator option out of range in the scene" "bad-mlt-option.json" "/render/mlt_sigma" -- render "$work/bad-mlt-option.json" --integrator mlt --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"accelerator\": {\"type\": \"octree\"} }" > "$work/unknown-accelerator.json"
+expect_failure "unknown accelerator in the scene" "unknown-accelerator.json: /accelerator/type" "octree" -- render "$work/unknown-accelerator.json" --out "$work/out.png"
+expect_failure "unknown accelerator on the command line" "--accel" "did you mean" -- render "$work/good.json" --accel brutforce --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"textures\": {\"layout\": \"tiled\"} }" > "$work/tiled.json"
+expect_failure "texture layout of a later chapter" "tiled.json: /textures/layout" "introduced in chapter 08" -- render "$work/tiled.json" --out "$work/out.png"
+renderer=$chapter01_renderer
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"accelerator\": {\"type\": \"kdtree\"} }" > "$work/kdtree.json"
+expect_failure "accelerator of a later chapter" "/accelerator/type" "introduced in chapter 06" -- render "$work/kdtree.json" --out "$work/out.png"
 expect_failure "integrator of a later chapter" "introduced in chapter 03" -- render "$work/good.json" --integrator pt-mis --out "$work/out.png"
 expect_failure "output folder that does not exist" "$work/no/such/folder/out.png" -- render "$work/good.json" --out "$work/no/such/folder/out.png"
 expect_failure "unknown output format" "out.tiff" -- render "$work/good.json" --out "$work/out.tiff"

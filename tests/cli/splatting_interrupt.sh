@@ -16,8 +16,10 @@ fail() { echo "FAIL [$1]"; failures=$((failures + 1)); }
 
 for integrator in bdpt mlt; do
     out="$work/$integrator.exr"
+    options=()  # mlt's own options (bdpt refuses them)
+    if [ $integrator = mlt ]; then options=(--mlt-bootstrap 2000); fi
     "$renderer" render "$scene" --integrator $integrator --width 48 --height 48 --time 120 --quiet --threads 1 \
-        --mlt-bootstrap 2000 --out "$out" 2>"$work/log" &
+        "${options[@]}" --out "$out" 2>"$work/log" &
     pid=$!
     for _ in $(seq 1 100); do sleep 0.05; done  # 5 s: bootstrap done, rounds under way
     kill -INT $pid

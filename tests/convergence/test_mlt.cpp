@@ -72,7 +72,7 @@ TEST_CASE("mlt's bootstrap estimate of b equals bdpt's mean image luminance with
     const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
     ch05::MltSettings settings;
     settings.bootstrap_samples = 200000;
-    const ch04::BidirectionalSettings bidirectional{64, ch03::MisHeuristic::Power};
+    const ch04::BidirectionalSettings bidirectional{64, ch03::MisHeuristic::Power, ""};
     const ch05::Bootstrap bootstrap = ch05::run_bootstrap(scene, lights, bidirectional, settings, 77, 0);
 
     std::vector<double> run_luminances;

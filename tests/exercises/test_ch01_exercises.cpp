@@ -1,7 +1,7 @@
 // Grading tests of chapter 01's exercises. Each test case is named after its exercise and
 // checks the student's code against an exact or statistical answer.
-#include "freezeray/lambertian.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/lambertian.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include "chi_square.hpp"
 #include "statistics.hpp"
@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 using namespace freezeray;
+using namespace freezeray::ch01;
 
 TEST_CASE("ch01/uniform-hemisphere", "[exercise]") {
     // Every direction is a unit vector on the upper hemisphere, and their distribution over the

@@ -1,7 +1,7 @@
 // Grading tests of chapter 04's exercises. Each test case is named after its exercise, calls the
 // exercise's own function first (so that in a student copy it fails through its own stub), and
 // checks it against exact values. Deterministic: no statistical test in this file.
-#include "freezeray/lambertian.hpp"
+#include "freezeray/ch01/lambertian.hpp"
 #include "freezeray/ch04/bdpt_mis_weight.hpp"
 #include "freezeray/ch04/light_tracer.hpp"
 
@@ -13,6 +13,7 @@
 #include <cmath>
 
 using namespace freezeray;
+using namespace freezeray::ch01;
 using namespace freezeray::ch04;
 
 TEST_CASE("ch04/strategy-ratio", "[exercise]") {

@@ -8,7 +8,9 @@ An exercise is a region of a function body, between two comment lines:
     // END EXERCISE
 
 The name is `chNN/kebab-name`; its chapter `chNN` is the chapter that teaches it.
-Regions live anywhere under common/ and chapters/. This module is shared by
+Regions live only under chapters/, in the folder of the chapter that teaches them
+(chapters/NN-name/ for chNN/...): common/ holds what no chapter is about, so it has none.
+This module is shared by
 make_student_copy.py, grade.py and prove_exercises.py; run on its own it checks the
 markers (`--check`) or lists the exercises (`--list`).
 """
@@ -22,8 +24,10 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-# The folders, relative to the repository root, that may hold exercise regions.
-REGION_FOLDERS = ("common", "chapters")
+# The folder, relative to the repository root, that holds exercise regions, one subfolder per
+# chapter (NN-name); and the folders that must hold none.
+REGION_FOLDERS = ("chapters",)
+FORBIDDEN_FOLDERS = ("common",)
 
 # The C++ files scanned for markers.
 CPP_SUFFIXES = {".cpp", ".cc", ".cxx", ".hpp", ".hh", ".h", ".hxx", ".inl", ".ipp"}
@@ -94,10 +98,10 @@ def is_chapter_name(text: str) -> bool:
     return CHAPTER_PATTERN.fullmatch(text) is not None
 
 
-def source_files(root: Path) -> list[Path]:
-    """The C++ files under common/ and chapters/, relative to root, in a stable order."""
+def source_files(root: Path, folders: tuple[str, ...] = REGION_FOLDERS) -> list[Path]:
+    """The C++ files under chapters/ (or `folders`), relative to root, in a stable order."""
     files = []
-    for folder in REGION_FOLDERS:
+    for folder in folders:
         base = root / folder
         if not base.is_dir():
             continue
@@ -177,6 +181,12 @@ def find_regions_with_problems(root: Path) -> tuple[list[Region], list[str]]:
         file_regions, file_problems = parse_file(text, path)
         regions.extend(file_regions)
         problems.extend(file_problems)
+    # A region outside chapters/ is misplaced (parse_file reports one in another chapter's folder).
+    for path in source_files(root, FORBIDDEN_FOLDERS):
+        text = (root / path).read_text(encoding="utf-8", errors="replace")
+        for region in parse_file(text, path)[0]:
+            problems.append(f"{region.location}: exercise {region.name} is outside chapters/: an exercise "
+                            f"lives in the folder of the chapter that teaches it")
     first_seen: dict[str, Region] = {}
     for region in regions:
         if region.name in first_seen:
@@ -256,7 +266,7 @@ def check_tree(root: Path) -> list[str]:
         for name, location in tests.items():
             if name not in names:
                 problems.append(f"{location}: grading test \"{name}\" names no exercise region "
-                                f"(expected `// EXERCISE({name}): ...` under common/ or chapters/)")
+                                f"(expected `// EXERCISE({name}): ...` under chapters/)")
     try:
         _, points = load_points(root / POINTS_FILE)
     except ValueError as error:

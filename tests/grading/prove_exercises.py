@@ -258,7 +258,7 @@ def match_tests_to_regions(regions: list[exercises.Region], tests: list[str]) ->
                                     f'(TEST_CASE("{name}", "[exercise]") in tests/exercises/)')
         if not proof.has_region:
             proof.violations.append(f"grading test \"{name}\" has no region "
-                                    f"(`// EXERCISE({name}): ...` under common/ or chapters/)")
+                                    f"(`// EXERCISE({name}): ...` under chapters/)")
         proofs[name] = proof
     return proofs
 

@@ -46,7 +46,7 @@ double twice(double x);
 
 # Includes error.hpp through warps.hpp: needs no extra include.
 WARPS_CPP = """\
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 namespace freezeray {
 
@@ -77,7 +77,7 @@ double four_times(double x) {
 """
 
 CHAPTER_02_CPP = """\
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 namespace freezeray {
 
@@ -112,8 +112,8 @@ def synthetic_tree(root: Path) -> None:
     write_tree(root, {
         "CMakeLists.txt": "project(Tiny)\n",
         "common/include/freezeray/error.hpp": ERROR_HPP,
-        "common/include/freezeray/warps.hpp": WARPS_HPP,
-        "common/src/warps.cpp": WARPS_CPP,
+        "chapters/01-naive/include/freezeray/ch01/warps.hpp": WARPS_HPP,
+        "chapters/01-naive/src/warps.cpp": WARPS_CPP,
         "chapters/01-naive/src/estimator.cpp": ESTIMATOR_CPP,
         "chapters/02-importance/src/mirror.cpp": CHAPTER_02_CPP,
         "tests/exercises/exercises.cpp": GRADING_TESTS,
@@ -148,7 +148,7 @@ class FindingRegions(TreeTestCase):
         regions = {region.name: region for region in exercises.find_regions(self.root)}
         self.assertEqual(sorted(regions), ["ch01/four-times", "ch01/twice", "ch02/mirror"])
         twice = regions["ch01/twice"]
-        self.assertEqual(twice.path, Path("common/src/warps.cpp"))
+        self.assertEqual(twice.path, Path("chapters/01-naive/src/warps.cpp"))
         self.assertEqual((twice.start, twice.end), (6, 9))
         self.assertEqual(twice.chapter, "ch01")
         self.assertEqual(twice.description, "return twice x")
@@ -164,7 +164,7 @@ class FindingRegions(TreeTestCase):
 class MalformedMarkers(unittest.TestCase):
     """Each mistake is reported with the file and line where it is."""
 
-    def problems(self, body: str, path: str = "common/src/bad.cpp") -> list[str]:
+    def problems(self, body: str, path: str = "chapters/01-naive/src/bad.cpp") -> list[str]:
         return exercises.parse_file(textwrap.dedent(body), Path(path))[1]
 
     def assert_reported(self, problems: list[str], location: str, words: str):
@@ -178,21 +178,21 @@ class MalformedMarkers(unittest.TestCase):
                 // END EXERCISE
             }
             """)
-        self.assert_reported(problems, "common/src/bad.cpp:2:", "malformed exercise name 'chapter1/Bad_Name'")
+        self.assert_reported(problems, "chapters/01-naive/src/bad.cpp:2:", "malformed exercise name 'chapter1/Bad_Name'")
 
     def test_missing_colon_or_description(self):
         self.assert_reported(self.problems("// EXERCISE(ch01/a) no colon\n// END EXERCISE\n"),
-                             "common/src/bad.cpp:1:", "malformed EXERCISE marker")
+                             "chapters/01-naive/src/bad.cpp:1:", "malformed EXERCISE marker")
         self.assert_reported(self.problems("// EXERCISE(ch01/a):\nx;\n// END EXERCISE\n"),
-                             "common/src/bad.cpp:1:", "no description")
+                             "chapters/01-naive/src/bad.cpp:1:", "no description")
 
     def test_end_without_start(self):
         self.assert_reported(self.problems("int x;\n// END EXERCISE\n"),
-                             "common/src/bad.cpp:2:", "without a matching EXERCISE")
+                             "chapters/01-naive/src/bad.cpp:2:", "without a matching EXERCISE")
 
     def test_start_never_closed(self):
         self.assert_reported(self.problems("// EXERCISE(ch01/a): do it\nint x;\n"),
-                             "common/src/bad.cpp:1:", "never closed")
+                             "chapters/01-naive/src/bad.cpp:1:", "never closed")
 
     def test_nested_regions(self):
         problems = self.problems("""\
@@ -202,17 +202,17 @@ class MalformedMarkers(unittest.TestCase):
             // END EXERCISE
             // END EXERCISE
             """)
-        self.assert_reported(problems, "common/src/bad.cpp:2:", "nested inside EXERCISE ch01/outer")
+        self.assert_reported(problems, "chapters/01-naive/src/bad.cpp:2:", "nested inside EXERCISE ch01/outer")
 
     def test_marker_after_code(self):
         self.assert_reported(self.problems("x = 1;  // EXERCISE(ch01/a): do it\n"),
-                             "common/src/bad.cpp:1:", "malformed EXERCISE marker")
+                             "chapters/01-naive/src/bad.cpp:1:", "malformed EXERCISE marker")
         self.assert_reported(self.problems("// EXERCISE(ch01/a): do it\nx;\n}  // END EXERCISE\n"),
-                             "common/src/bad.cpp:3:", "malformed END EXERCISE marker")
+                             "chapters/01-naive/src/bad.cpp:3:", "malformed END EXERCISE marker")
 
     def test_empty_region(self):
         self.assert_reported(self.problems("// EXERCISE(ch01/a): do it\n// END EXERCISE\n"),
-                             "common/src/bad.cpp:1:", "is empty")
+                             "chapters/01-naive/src/bad.cpp:1:", "is empty")
 
     def test_chapter_must_match_the_chapter_folder(self):
         problems = self.problems("// EXERCISE(ch02/a): do it\nx;\n// END EXERCISE\n",
@@ -226,7 +226,7 @@ class CheckingTheTree(TreeTestCase):
                                "void g() {\n    // EXERCISE(ch01/twice): again\n    x;\n    // END EXERCISE\n}\n"})
         problems = exercises.check_tree(self.root)
         self.assertTrue(any("duplicate exercise name ch01/twice" in p and "chapters/01-naive/src/again.cpp:2" in p
-                            and "common/src/warps.cpp:6" in p for p in problems), problems)
+                            and "chapters/01-naive/src/warps.cpp:6" in p for p in problems), problems)
         with self.assertRaises(exercises.MarkerError):
             exercises.find_regions(self.root)
 
@@ -235,7 +235,7 @@ class CheckingTheTree(TreeTestCase):
         (self.root / "tests/exercises/exercises.cpp").write_text(
             GRADING_TESTS.replace('TEST_CASE("ch01/twice", "[exercise]") {}\n', ""))
         problems = exercises.check_tree(self.root)
-        self.assertTrue(any(p.startswith("common/src/warps.cpp:6:") and "no grading test" in p for p in problems))
+        self.assertTrue(any(p.startswith("chapters/01-naive/src/warps.cpp:6:") and "no grading test" in p for p in problems))
         self.assertTrue(any(p.startswith("tests/exercises/more.cpp:1:") and "ch01/ghost" in p for p in problems))
 
     def test_points_for_an_unknown_exercise(self):
@@ -243,17 +243,27 @@ class CheckingTheTree(TreeTestCase):
         problems = exercises.check_tree(self.root)
         self.assertTrue(any("ch09/nothing" in p for p in problems), problems)
 
+    def test_a_region_outside_its_chapter_folder_is_reported(self):
+        region = "// EXERCISE(ch01/elsewhere): return x\nreturn x;\n// END EXERCISE\n"
+        write_tree(self.root, {"common/src/shared.cpp": region,
+                               "chapters/02-importance/src/misplaced.cpp": region.replace("elsewhere", "misplaced")})
+        problems = exercises.check_tree(self.root)
+        self.assertTrue(any(p.startswith("common/src/shared.cpp:1:") and "outside chapters/" in p for p in problems),
+                        problems)
+        self.assertTrue(any(p.startswith("chapters/02-importance/src/misplaced.cpp:1:") and "chapter 02's folder" in p
+                            for p in problems), problems)
+
     def test_check_exit_status_and_messages(self):
-        write_tree(self.root, {"common/src/broken.cpp": "// END EXERCISE\n"})
+        write_tree(self.root, {"chapters/01-naive/src/broken.cpp": "// END EXERCISE\n"})
         with redirect_stderr(io.StringIO()) as errors:
             self.assertEqual(exercises.main(["--root", str(self.root)]), 1)
-        self.assertIn("common/src/broken.cpp:1:", errors.getvalue())
+        self.assertIn("chapters/01-naive/src/broken.cpp:1:", errors.getvalue())
 
 
 class StudentCopy(TreeTestCase):
     def test_every_region_is_stubbed_and_markers_kept(self):
         copy = self.copy()
-        text = (copy / "common/src/warps.cpp").read_text()
+        text = (copy / "chapters/01-naive/src/warps.cpp").read_text()
         self.assertIn("    // EXERCISE(ch01/twice): return twice x\n"
                       '    throw ::freezeray::ExerciseNotImplemented("ch01/twice");\n'
                       "    // END EXERCISE\n", text)
@@ -265,7 +275,7 @@ class StudentCopy(TreeTestCase):
 
     def test_error_header_included_only_where_missing(self):
         copy = self.copy()
-        warps = (copy / "common/src/warps.cpp").read_text()
+        warps = (copy / "chapters/01-naive/src/warps.cpp").read_text()
         self.assertEqual(warps.count("#include"), 1, "warps.hpp already brings error.hpp")
         estimator = (copy / "chapters/01-naive/src/estimator.cpp").read_text().splitlines()
         self.assertEqual(estimator[:3], ["#include <cmath>", "#include <vector>",
@@ -280,13 +290,13 @@ class StudentCopy(TreeTestCase):
     def test_only_one_exercise(self):
         copy = self.copy("--only", "ch01/four-times")
         self.assertIn("ExerciseNotImplemented", (copy / "chapters/01-naive/src/estimator.cpp").read_text())
-        self.assertIn("x + x", (copy / "common/src/warps.cpp").read_text())
+        self.assertIn("x + x", (copy / "chapters/01-naive/src/warps.cpp").read_text())
         self.assertIn("return -y", (copy / "chapters/02-importance/src/mirror.cpp").read_text())
 
     def test_one_chapter(self):
         copy = self.copy("--chapter", "ch02")
         self.assertIn("ExerciseNotImplemented", (copy / "chapters/02-importance/src/mirror.cpp").read_text())
-        self.assertIn("x + x", (copy / "common/src/warps.cpp").read_text())
+        self.assertIn("x + x", (copy / "chapters/01-naive/src/warps.cpp").read_text())
 
     def test_unknown_exercise_is_an_error(self):
         with redirect_stderr(io.StringIO()) as errors:
@@ -304,7 +314,7 @@ class StudentCopy(TreeTestCase):
         copy = self.copy()
         with self.assertRaises(SystemExit):
             make_student_copy.make_student_copy(self.root, copy)
-        untouched = (copy / "common/src/warps.cpp").stat().st_mtime_ns
+        untouched = (copy / "chapters/01-naive/src/warps.cpp").stat().st_mtime_ns
         (self.root / "CMakeLists.txt").unlink()
         write_tree(copy, {"build/CMakeCache.txt": "", "out/CMakeCache.txt": "", "stale/old.txt": ""})
         counts = make_student_copy.make_student_copy(self.root, copy, update=True)
@@ -314,7 +324,7 @@ class StudentCopy(TreeTestCase):
         self.assertFalse((copy / "stale").exists())
         self.assertTrue((copy / "build/CMakeCache.txt").exists(), "a build folder in the copy is kept")
         self.assertTrue((copy / "out/CMakeCache.txt").exists(), "a build tree in the copy is kept")
-        self.assertEqual((copy / "common/src/warps.cpp").stat().st_mtime_ns, untouched)
+        self.assertEqual((copy / "chapters/01-naive/src/warps.cpp").stat().st_mtime_ns, untouched)
 
     @unittest.skipUnless(shutil.which("git"), "git is not installed")
     def test_git_checkout_copies_tracked_and_unignored_files(self):
@@ -326,7 +336,7 @@ class StudentCopy(TreeTestCase):
         self.assertTrue((copy / "tests/exercises/exercises.cpp").is_file())
         self.assertFalse((copy / "notes.log").exists())
         self.assertFalse((copy / "build").exists())
-        self.assertIn("ExerciseNotImplemented", (copy / "common/src/warps.cpp").read_text())
+        self.assertIn("ExerciseNotImplemented", (copy / "chapters/01-naive/src/warps.cpp").read_text())
 
 
 CANNED_JUNIT = """\

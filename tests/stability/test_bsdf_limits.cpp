@@ -10,7 +10,7 @@
 #include "freezeray/material.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/registry.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -19,6 +19,7 @@
 #include <sstream>
 
 using namespace freezeray;
+using namespace freezeray::ch01;
 using json = nlohmann::json;
 
 namespace {

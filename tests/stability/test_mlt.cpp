@@ -54,7 +54,7 @@ TEST_CASE("mlt starts and lights the image when almost every bootstrap path carr
     ch05::MltSettings settings;
     settings.bootstrap_samples = 20000;
     const ch05::Bootstrap bootstrap =
-        ch05::run_bootstrap(scene, lights, ch04::BidirectionalSettings{12, ch03::MisHeuristic::Power}, settings, 160, 1);
+        ch05::run_bootstrap(scene, lights, ch04::BidirectionalSettings{12, ch03::MisHeuristic::Power, ""}, settings, 160, 1);
     const auto carrying = std::count_if(bootstrap.values.begin(), bootstrap.values.end(), [](float v) { return v > 0.0f; });
     INFO(carrying << " of 20000 bootstrap paths carry light");
     CHECK(carrying > 0);

@@ -8,11 +8,12 @@
 #include "test_scenes.hpp"
 
 #include "freezeray/random.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include <catch2/catch.hpp>
 
 using namespace freezeray;
+using namespace freezeray::ch01;
 using namespace freezeray::stability;
 
 namespace {

@@ -1,11 +1,7 @@
 // Helpers for tests that render.
 #include "test_scenes.hpp"
 
-#include "freezeray/ch01/register_chapter01.hpp"
-#include "freezeray/ch02/register_chapter02.hpp"
-#include "freezeray/ch03/register_chapter03.hpp"
-#include "freezeray/ch04/register_chapter04.hpp"
-#include "freezeray/ch05/register_chapter05.hpp"
+#include "freezeray/complete_renderer.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/progress.hpp"
 
@@ -36,15 +32,7 @@ std::optional<std::string> shared_scenes_folder() {
 }
 
 const Registry& full_registry() {
-    static const Registry registry = [] {
-        Registry r("freezeray", 5);
-        register_chapter01(r);
-        register_chapter02(r);
-        register_chapter03(r);
-        register_chapter04(r);
-        register_chapter05(r);
-        return r;
-    }();
+    static const Registry registry = make_complete_registry("freezeray");
     return registry;
 }
 
@@ -67,10 +55,13 @@ RenderResult render(const TestRender& request) {
     settings.seed = request.seed;
     settings.threads = request.threads;
     settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
-    settings.strategy_images = request.strategy_images;
-    settings.mlt_bootstrap_samples = request.mlt_bootstrap;
-    settings.mlt_chains = request.mlt_chains;
-    const auto integrator = full_registry().make_integrator(request.integrator, settings, "test");
+    // The chapters' own options, as the command line would give them.
+    OptionValues given;
+    if (request.strategy_images) given.values["bdpt_strategies"] = std::filesystem::temp_directory_path().string();
+    if (request.mlt_bootstrap > 0) given.values["mlt_bootstrap"] = request.mlt_bootstrap;
+    if (request.mlt_chains > 0) given.values["mlt_chains"] = request.mlt_chains;
+    const auto chapter_options = integrator_options(scene, given, full_registry());
+    const auto integrator = full_registry().make_integrator(request.integrator, settings, "test", &chapter_options->parameters());
     Progress quiet(true);
     return integrator->render(scene, settings, quiet);
 }

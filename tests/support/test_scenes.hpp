@@ -35,9 +35,9 @@ struct TestRender {
     int width = 0;                 // 0: the scene's
     int height = 0;
     int max_depth = 0;             // 0: the scene's, else the integrator's default
-    bool strategy_images = false;  // RenderSettings::strategy_images (bdpt)
-    std::uint64_t mlt_bootstrap = 0;  // RenderSettings::mlt_bootstrap_samples (0: mlt's default)
-    int mlt_chains = 0;               // RenderSettings::mlt_chains
+    bool strategy_images = false;     // bdpt's per-strategy images (--bdpt-strategies; not written)
+    std::uint64_t mlt_bootstrap = 0;  // --mlt-bootstrap (0: mlt's default)
+    int mlt_chains = 0;               // --mlt-chains (0: mlt's default)
 };
 
 // Loads and renders, quietly.

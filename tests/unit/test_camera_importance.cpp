@@ -1,11 +1,13 @@
 // The pinhole camera's importance We and sample_wi (Veach 1997, section 10.2; pbrt-v3, 16.1.1).
 #include "freezeray/camera.hpp"
+#include "freezeray/ch04/camera_importance.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
 using namespace freezeray;
+using namespace freezeray::ch04;
 
 namespace {
 
@@ -41,8 +43,8 @@ TEST_CASE("the camera's importance We cos(theta) integrates to 1 over the sphere
                 const Vec3 local(static_cast<float>(sin_theta * std::cos(phi)), static_cast<float>(sin_theta * std::sin(phi)),
                                  static_cast<float>(cos_theta));
                 const Vec3 direction = glm::normalize(frame.to_world(local));
-                importance += camera.importance(Ray{camera.position(), direction}) * cos_theta;
-                pdf += camera.pdf_direction(direction);
+                importance += camera_importance(camera, Ray{camera.position(), direction}) * cos_theta;
+                pdf += camera_pdf_direction(camera, direction);
             }
         }
         const double cell = (1.0 / bands) * (2.0 * Pi / sectors);
@@ -50,7 +52,7 @@ TEST_CASE("the camera's importance We cos(theta) integrates to 1 over the sphere
         CHECK(importance * cell == Approx(1.0).margin(2e-3));
         CHECK(pdf * cell == Approx(1.0).margin(2e-3));
         // At the centre of the film theta = 0: We = 1 / A.
-        CHECK(camera.importance(Ray{camera.position(), camera.forward()}) == Approx(1.0f / camera.image_plane_area()));
+        CHECK(camera_importance(camera, Ray{camera.position(), camera.forward()}) == Approx(1.0f / camera.image_plane_area()));
     }
 }
 
@@ -62,7 +64,7 @@ TEST_CASE("sample_wi finds the raster position generate_ray came from, with pdf 
                         0.2f + 47.6f * static_cast<float>((i * 53) % 200) / 200.0f);
         const Ray ray = camera.generate_ray(film);
         const float t = 0.5f + 0.1f * static_cast<float>(i);
-        const std::optional<CameraImportanceSample> sample = camera.sample_wi(ray.at(t));
+        const std::optional<CameraImportanceSample> sample = sample_camera_wi(camera, ray.at(t));
         REQUIRE(sample);
         CHECK(sample->raster_position.x == Approx(film.x).margin(2e-3));
         CHECK(sample->raster_position.y == Approx(film.y).margin(2e-3));
@@ -70,13 +72,13 @@ TEST_CASE("sample_wi finds the raster position generate_ray came from, with pdf 
         CHECK(sample->distance == Approx(t).epsilon(1e-4));
         const float cos_theta = glm::dot(ray.direction, camera.forward());
         CHECK(sample->pdf == Approx(t * t / cos_theta).epsilon(1e-4));
-        CHECK(sample->importance == Approx(camera.importance(ray)).epsilon(1e-4));
-        CHECK(camera.pdf_direction(ray.direction) == Approx(1.0f / (camera.image_plane_area() * std::pow(cos_theta, 3.0f))).epsilon(1e-4));
+        CHECK(sample->importance == Approx(camera_importance(camera, ray)).epsilon(1e-4));
+        CHECK(camera_pdf_direction(camera, ray.direction) == Approx(1.0f / (camera.image_plane_area() * std::pow(cos_theta, 3.0f))).epsilon(1e-4));
     }
     // Behind the camera, and in front but outside the film: nothing, and no importance.
-    CHECK_FALSE(camera.sample_wi(camera.position() - camera.forward()));
+    CHECK_FALSE(sample_camera_wi(camera, camera.position() - camera.forward()));
     const Ray outside{camera.position(), glm::normalize(camera.forward() + 3.0f * Vec3(0, 1, 0))};
-    CHECK_FALSE(camera.sample_wi(outside.at(2.0f)));
-    CHECK(camera.importance(outside) == 0.0f);
-    CHECK_FALSE(camera.sample_wi(camera.position()));
+    CHECK_FALSE(sample_camera_wi(camera, outside.at(2.0f)));
+    CHECK(camera_importance(camera, outside) == 0.0f);
+    CHECK_FALSE(sample_camera_wi(camera, camera.position()));
 }

@@ -2,13 +2,14 @@
 #include "freezeray/accelerator.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/triangle_intersection.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <map>
 
 using namespace freezeray;
+using namespace freezeray::ch01;
 
 namespace {
 

@@ -1,6 +1,6 @@
 // The splatting film: its normalisation, its half-buffer variance, invalid splats, and a splatting
 // render's refusal to resume.
-#include "freezeray/splat_film.hpp"
+#include "freezeray/ch04/splat_film.hpp"
 
 #include "freezeray/error.hpp"
 #include "freezeray/integrator.hpp"
@@ -14,6 +14,7 @@
 #include <cmath>
 
 using namespace freezeray;
+using namespace freezeray::ch04;
 
 TEST_CASE("a splatted pixel is the sum of its splats divided by the light paths per pixel", "[unit][film][ch04]") {
     // 2x2 pixels, 8 light paths (2 per pixel): pixel (1, 0) receives 3 and 5 from paths 0 and 1

@@ -5,12 +5,14 @@
 #include "freezeray/ch02/texture_storage.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
+#include "freezeray/random.hpp"
 
 #include "test_scenes.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 using namespace freezeray;
@@ -140,7 +142,7 @@ TEST_CASE("v = 0 is the bottom row of the image file, as in OBJ", "[unit][textur
     image.at(0, 0) = Spectrum(1.0f, 0.0f, 0.0f);  // top row: red
     image.at(0, 1) = Spectrum(0.0f, 0.0f, 1.0f);  // bottom row: blue
     write_image(folder.file("rows.png"), image);
-    const ImageTexture<Spectrum> texture(load_texture_storage(folder.file("rows.png"), TextureEncoding::SRGB),
+    const ImageTexture<Spectrum> texture(load_texture_storage(folder.file("rows.png"), TextureEncoding::SRGB, testing::full_registry(), "linear"),
                                          WrapMode::Clamp);
     check_equal(texture.eval(Vec2(0.5f, 0.1f)), Spectrum(0.0f, 0.0f, 1.0f));
     check_equal(texture.eval(Vec2(0.5f, 0.9f)), Spectrum(1.0f, 0.0f, 0.0f));
@@ -150,16 +152,16 @@ TEST_CASE("a colour map is decoded from sRGB, a data map keeps its stored values
     const TemporaryFolder folder;
     // An 8-bit file cannot hold 0.5 exactly: code 128 (0.502 encoded) decodes to 0.2158.
     write_image(folder.file("grey.png"), Image(1, 1, Spectrum(srgb_to_linear(128.0f / 255.0f))));
-    const auto colour = load_texture_storage(folder.file("grey.png"), TextureEncoding::SRGB);
-    const auto data = load_texture_storage(folder.file("grey.png"), TextureEncoding::Linear);
+    const auto colour = load_texture_storage(folder.file("grey.png"), TextureEncoding::SRGB, testing::full_registry(), "linear");
+    const auto data = load_texture_storage(folder.file("grey.png"), TextureEncoding::Linear, testing::full_registry(), "linear");
     CHECK(colour->texel(0, 0).g == Approx(srgb_to_linear(128.0f / 255.0f)).margin(1e-6));
     CHECK(colour->texel(0, 0).g == Approx(0.214f).margin(0.002));  // 0.5 encoded is 0.214 linear
     CHECK(data->texel(0, 0).g == Approx(128.0f / 255.0f).margin(1e-5));
 
     SECTION("floating-point files hold linear values in both encodings") {
         write_image(folder.file("grey.pfm"), Image(1, 1, Spectrum(0.5f)));
-        CHECK(load_texture_storage(folder.file("grey.pfm"), TextureEncoding::SRGB)->texel(0, 0).r == 0.5f);
-        CHECK(load_texture_storage(folder.file("grey.pfm"), TextureEncoding::Linear)->texel(0, 0).r == 0.5f);
+        CHECK(load_texture_storage(folder.file("grey.pfm"), TextureEncoding::SRGB, testing::full_registry(), "linear")->texel(0, 0).r == 0.5f);
+        CHECK(load_texture_storage(folder.file("grey.pfm"), TextureEncoding::Linear, testing::full_registry(), "linear")->texel(0, 0).r == 0.5f);
     }
 }
 
@@ -175,23 +177,45 @@ TEST_CASE("a float texture reads the first channel", "[unit][texture]") {
 TEST_CASE("a file is read once while textures use it", "[unit][texture]") {
     const TemporaryFolder folder;
     write_image(folder.file("shared.png"), Image(2, 2, Spectrum(0.5f)));
-    const auto first = load_texture_storage(folder.file("shared.png"), TextureEncoding::SRGB);
-    const auto again = load_texture_storage(folder.path() + "/./shared.png", TextureEncoding::SRGB);
-    const auto as_data = load_texture_storage(folder.file("shared.png"), TextureEncoding::Linear);
+    const auto first = load_texture_storage(folder.file("shared.png"), TextureEncoding::SRGB, testing::full_registry(), "linear");
+    const auto again = load_texture_storage(folder.path() + "/./shared.png", TextureEncoding::SRGB, testing::full_registry(), "linear");
+    const auto as_data = load_texture_storage(folder.file("shared.png"), TextureEncoding::Linear, testing::full_registry(), "linear");
     CHECK(first.get() == again.get());
     CHECK(first.get() != as_data.get());
 }
 
 TEST_CASE("unreadable texture files are InputErrors naming the file or the texel", "[unit][texture]") {
     const TemporaryFolder folder;
-    CHECK_THROWS_AS(load_texture_storage(folder.file("missing.png"), TextureEncoding::SRGB), InputError);
+    CHECK_THROWS_AS(load_texture_storage(folder.file("missing.png"), TextureEncoding::SRGB, testing::full_registry(), "linear"), InputError);
     Image bad(2, 1, Spectrum(0.5f));
     bad.at(1, 0).g = std::numeric_limits<float>::infinity();
     write_image(folder.file("bad.pfm"), bad);
     try {
-        load_texture_storage(folder.file("bad.pfm"), TextureEncoding::Linear);
+        load_texture_storage(folder.file("bad.pfm"), TextureEncoding::Linear, testing::full_registry(), "linear");
         FAIL("no error");
     } catch (const InputError& e) {
         CHECK_THAT(e.what(), Catch::Contains("bad.pfm") && Catch::Contains("texel (1, 0)"));
     }
+}
+
+TEST_CASE("a texture lookup (one virtual call, texels read inline) equals the filter reading every texel through the "
+          "virtual interface, bit for bit",
+          "[unit][texture]") {
+    // A 7 x 5 image of distinct values, so that any texel read from the wrong place shows.
+    Image image(7, 5);
+    PCG32 random(12345, 1);
+    for (Spectrum& texel : image.pixels()) texel = Spectrum(random.next_float(), random.next_float(), random.next_float());
+    const LinearTextureStorage linear(image);
+    const TextureStorage& through_interface = linear;
+    std::size_t differing = 0;
+    for (const WrapMode wrap : {WrapMode::Repeat, WrapMode::Clamp, WrapMode::Mirror})
+        for (int i = 0; i < 20000; ++i) {
+            const Vec2 uv(4.0f * random.next_float() - 1.5f, 4.0f * random.next_float() - 1.5f);
+            // bilinear_lookup<TextureStorage> calls the virtual texel four times: the path every
+            // lookup took before layouts had their own lookup.
+            const Spectrum reference = bilinear_lookup(through_interface, uv, wrap);
+            const Spectrum value = through_interface.lookup(uv, wrap);
+            for (int c = 0; c < 3; ++c) differing += std::memcmp(&reference[c], &value[c], sizeof(float)) != 0;
+        }
+    CHECK(differing == 0u);
 }

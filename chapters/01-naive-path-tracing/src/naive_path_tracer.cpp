@@ -3,7 +3,7 @@
 #include "freezeray/ch01/naive_path_tracer.hpp"
 
 #include "freezeray/error.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 namespace freezeray::ch01 {
 

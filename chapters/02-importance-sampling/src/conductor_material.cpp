@@ -86,8 +86,8 @@ const BSDF* ConductorMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
 }
 // END BOOK
 
-std::unique_ptr<Material> make_mirror_material(const Parameters& p) {
-    return std::make_unique<MirrorMaterial>(read_spectrum_texture(p, "reflectance", Spectrum(1.0f), 0.0f, 1.0f));
+std::unique_ptr<Material> make_mirror_material(const Parameters& p, const MaterialContext& context) {
+    return std::make_unique<MirrorMaterial>(read_spectrum_texture(p, context, "reflectance", Spectrum(1.0f), 0.0f, 1.0f));
 }
 
 namespace {
@@ -105,7 +105,7 @@ Spectrum read_optical_constant(const Parameters& p, const std::string& key, bool
 
 // "material" (a preset), or "eta" and "k", each tinted by "specular_reflectance"; or only
 // "specular_reflectance", the reflectance at normal incidence (what an MTL file's Ks means).
-ConductorReflectance read_conductor_reflectance(const Parameters& p) {
+ConductorReflectance read_conductor_reflectance(const Parameters& p, const MaterialContext& context) {
     const bool has_preset = p.has("material");
     const bool has_index = p.has("eta") || p.has("k");
     if (has_preset && has_index)
@@ -121,17 +121,17 @@ ConductorReflectance read_conductor_reflectance(const Parameters& p) {
                                                       nearest_name(name, names) + "'?); presets: " + all);
         }
         return ConductorReflectance::from_index(preset->eta, preset->k,
-                                                read_spectrum_texture(p, "specular_reflectance", Spectrum(1.0f), 0.0f, 1.0f));
+                                                read_spectrum_texture(p, context, "specular_reflectance", Spectrum(1.0f), 0.0f, 1.0f));
     }
     if (has_index) {
         const Spectrum eta = read_optical_constant(p, "eta", true);
         const Spectrum k = read_optical_constant(p, "k", false);
         return ConductorReflectance::from_index(eta, k,
-                                                read_spectrum_texture(p, "specular_reflectance", Spectrum(1.0f), 0.0f, 1.0f));
+                                                read_spectrum_texture(p, context, "specular_reflectance", Spectrum(1.0f), 0.0f, 1.0f));
     }
     if (p.has("specular_reflectance") || p.has("specular_reflectance_texture"))
         return ConductorReflectance::from_normal_reflectance(
-            read_spectrum_texture(p, "specular_reflectance", Spectrum(1.0f), 0.0f, 1.0f));
+            read_spectrum_texture(p, context, "specular_reflectance", Spectrum(1.0f), 0.0f, 1.0f));
     std::string presets;
     for (const std::string& n : conductor_preset_names()) presets += (presets.empty() ? "" : ", ") + n;
     throw InputError(p.where("material"), "a conductor needs a preset 'material' (" + presets +
@@ -141,9 +141,9 @@ ConductorReflectance read_conductor_reflectance(const Parameters& p) {
 
 }  // namespace
 
-std::unique_ptr<Material> make_conductor_material(const Parameters& p, bool rough) {
-    ConductorReflectance reflectance = read_conductor_reflectance(p);
-    MicrofacetRoughness roughness = rough ? read_microfacet_roughness(p, DefaultRoughness) : smooth_roughness();
+std::unique_ptr<Material> make_conductor_material(const Parameters& p, const MaterialContext& context, bool rough) {
+    ConductorReflectance reflectance = read_conductor_reflectance(p, context);
+    MicrofacetRoughness roughness = rough ? read_microfacet_roughness(p, context, DefaultRoughness) : smooth_roughness();
     return std::make_unique<ConductorMaterial>(std::move(reflectance), std::move(roughness));
 }
 

@@ -12,9 +12,9 @@ const BSDF* DielectricMaterial::bsdf(const Hit& hit, ScratchArena& arena) const 
 }
 
 // "ior" (default 1.5, window glass; MTL Ni), and for the rough variant the roughness.
-std::unique_ptr<Material> make_dielectric_material(const Parameters& p, bool rough) {
+std::unique_ptr<Material> make_dielectric_material(const Parameters& p, const MaterialContext& context, bool rough) {
     const float eta = read_index_of_refraction(p, 1.5f);
-    return std::make_unique<DielectricMaterial>(eta, rough ? read_microfacet_roughness(p, DefaultRoughness)
+    return std::make_unique<DielectricMaterial>(eta, rough ? read_microfacet_roughness(p, context, DefaultRoughness)
                                                            : smooth_roughness());
 }
 

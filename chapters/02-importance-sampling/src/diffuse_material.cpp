@@ -10,8 +10,8 @@ const BSDF* DiffuseMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
 }
 // END BOOK
 
-std::unique_ptr<Material> make_diffuse_material(const Parameters& p) {
-    return std::make_unique<DiffuseMaterial>(read_spectrum_texture(p, "albedo", Spectrum(0.5f), 0.0f, 1.0f));
+std::unique_ptr<Material> make_diffuse_material(const Parameters& p, const MaterialContext& context) {
+    return std::make_unique<DiffuseMaterial>(read_spectrum_texture(p, context, "albedo", Spectrum(0.5f), 0.0f, 1.0f));
 }
 
 }  // namespace freezeray::ch02

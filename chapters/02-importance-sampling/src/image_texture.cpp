@@ -1,8 +1,9 @@
-// Image textures: wrap modes, bilinear filtering, and reading each file once.
+// Image textures: wrap mode names, and reading each file once.
 #include "freezeray/ch02/image_texture.hpp"
 
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
+#include "freezeray/registry.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <tuple>
 #include <utility>
 
 namespace freezeray::ch02 {
@@ -28,61 +30,6 @@ std::optional<TextureEncoding> texture_encoding_from_name(const std::string& nam
     if (name == "linear") return TextureEncoding::Linear;
     return std::nullopt;
 }
-
-// BOOK(wrap-texel-index)
-int wrap_texel_index(int i, int n, WrapMode wrap) {
-    switch (wrap) {
-        case WrapMode::Repeat: return ((i % n) + n) % n;  // C++'s % keeps the sign of i
-        case WrapMode::Clamp: return std::clamp(i, 0, n - 1);
-        case WrapMode::Mirror: {
-            // Mirrored repetition has period 2n: n texels forwards, then the same n backwards.
-            const int m = ((i % (2 * n)) + 2 * n) % (2 * n);
-            return m < n ? m : 2 * n - 1 - m;
-        }
-    }
-    return 0;
-}
-// END BOOK
-
-namespace {
-
-// Moves a coordinate by whole periods of the wrap mode (which changes nothing) so that texel
-// indices computed from it stay small: a uv of 1e9 would overflow an int. A coordinate that
-// is not a number reads the texture at 0.
-float reduce_to_one_period(float u, WrapMode wrap) {
-    if (!std::isfinite(u)) return 0.0f;
-    switch (wrap) {
-        case WrapMode::Repeat: return u - std::floor(u);
-        case WrapMode::Mirror: return u - 2.0f * std::floor(0.5f * u);
-        case WrapMode::Clamp: return std::clamp(u, -1.0f, 2.0f);
-    }
-    return u;
-}
-
-}  // namespace
-
-// BOOK(bilinear-lookup)
-Spectrum bilinear_lookup(const TextureStorage& storage, const Vec2& uv, WrapMode wrap) {
-    const int width = storage.width();
-    const int height = storage.height();
-    // Continuous texel coordinates: texel centres sit at half-integers, so subtracting 1/2
-    // puts them on integers. Rows count down from the top of the image while v counts up.
-    const float x = reduce_to_one_period(uv.x, wrap) * static_cast<float>(width) - 0.5f;
-    const float y = (1.0f - reduce_to_one_period(uv.y, wrap)) * static_cast<float>(height) - 0.5f;
-    const float x0 = std::floor(x);
-    const float y0 = std::floor(y);
-    const float dx = x - x0;  // weight of the right-hand column
-    const float dy = y - y0;  // weight of the lower row
-
-    const int left = wrap_texel_index(static_cast<int>(x0), width, wrap);
-    const int right = wrap_texel_index(static_cast<int>(x0) + 1, width, wrap);
-    const int top = wrap_texel_index(static_cast<int>(y0), height, wrap);
-    const int bottom = wrap_texel_index(static_cast<int>(y0) + 1, height, wrap);
-
-    return (1.0f - dx) * (1.0f - dy) * storage.texel(left, top) + dx * (1.0f - dy) * storage.texel(right, top) +
-           (1.0f - dx) * dy * storage.texel(left, bottom) + dx * dy * storage.texel(right, bottom);
-}
-// END BOOK
 
 namespace {
 
@@ -124,17 +71,18 @@ std::string canonical_name(const std::string& path) {
 
 }  // namespace
 
-std::shared_ptr<const TextureStorage> load_texture_storage(const std::string& path, TextureEncoding encoding) {
+std::shared_ptr<const TextureStorage> load_texture_storage(const std::string& path, TextureEncoding encoding,
+                                                           const Registry& registry, const std::string& layout) {
     // The cache holds weak pointers: a file stays in memory exactly as long as some texture
     // uses it, and a scene loaded later reads it afresh.
     static std::mutex mutex;
-    static std::map<std::pair<std::string, TextureEncoding>, std::weak_ptr<const TextureStorage>> cache;
+    static std::map<std::tuple<std::string, TextureEncoding, std::string>, std::weak_ptr<const TextureStorage>> cache;
 
-    const auto key = std::make_pair(canonical_name(path), encoding);
+    const auto key = std::make_tuple(canonical_name(path), encoding, layout);
     const std::lock_guard<std::mutex> lock(mutex);
     if (auto shared = cache[key].lock()) return shared;
     std::shared_ptr<const TextureStorage> storage =
-        std::make_shared<LinearTextureStorage>(read_texture_image(path, encoding));
+        registry.make_texture_storage(layout, read_texture_image(path, encoding), "texture layout");
     cache[key] = storage;
     std::erase_if(cache, [](const auto& entry) { return entry.second.expired(); });
     return storage;

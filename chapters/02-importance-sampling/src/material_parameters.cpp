@@ -44,19 +44,23 @@ Enum read_choice(const Parameters& p, const std::string& key, const std::string&
 
 // The image texture "key_texture" describes (a file name or an object), or nullptr when absent.
 template <typename T>
-std::shared_ptr<const Texture<T>> read_image_texture(const Parameters& p, const std::string& key,
+std::shared_ptr<const Texture<T>> read_image_texture(const Parameters& p, const MaterialContext& context, const std::string& key,
                                                      TextureEncoding default_encoding, float min, float max) {
     const std::string texture_key = key + "_texture";
     if (!p.has(texture_key)) return nullptr;
     std::string file;
     WrapMode wrap = WrapMode::Repeat;
     TextureEncoding encoding = default_encoding;
+    std::string layout = context.texture_layout;
     if (p.json().at(texture_key).is_object()) {
         const Parameters t = p.child(texture_key);
         file = t.require_existing_file("file");
         wrap = read_choice<WrapMode>(t, "wrap", "repeat", wrap_mode_from_name, wrap_mode_names());
         encoding = read_choice<TextureEncoding>(t, "encoding", default_encoding == TextureEncoding::SRGB ? "srgb" : "linear",
                                                 texture_encoding_from_name, {"srgb", "linear"});
+        // This texture's own layout, over the scene's (its "textures" block).
+        layout = t.get_string("layout", layout);
+        context.registry.require(CapabilityKind::TextureLayout, layout, t.where("layout"));
         refuse_unknown_keys(t);
     } else if (p.json().at(texture_key).is_string()) {
         file = p.require_existing_file(texture_key);
@@ -66,7 +70,7 @@ std::shared_ptr<const Texture<T>> read_image_texture(const Parameters& p, const 
 
     std::shared_ptr<const TextureStorage> storage;
     try {
-        storage = load_texture_storage(file, encoding);
+        storage = load_texture_storage(file, encoding, context.registry, layout);
     } catch (const InputError& e) {
         throw InputError(p.where(texture_key), e.what());  // the JSON path, then the file's own message
     }
@@ -78,18 +82,18 @@ std::shared_ptr<const Texture<T>> read_image_texture(const Parameters& p, const 
 
 }  // namespace
 
-SpectrumTexture read_spectrum_texture(const Parameters& p, const std::string& key, const Spectrum& fallback, float min,
+SpectrumTexture read_spectrum_texture(const Parameters& p, const MaterialContext& context, const std::string& key, const Spectrum& fallback, float min,
                                       float max) {
     // The constant is checked even when a texture replaces it (an MTL file gives both Kd and map_Kd).
     const Spectrum value = p.get_spectrum(key, fallback);
     for (int c = 0; c < 3; ++c) p.check_range(key, value[c], min, max);
-    if (SpectrumTexture texture = read_image_texture<Spectrum>(p, key, TextureEncoding::SRGB, min, max)) return texture;
+    if (SpectrumTexture texture = read_image_texture<Spectrum>(p, context, key, TextureEncoding::SRGB, min, max)) return texture;
     return make_constant_texture(value);
 }
 
-FloatTexture read_float_texture(const Parameters& p, const std::string& key, float fallback, float min, float max) {
+FloatTexture read_float_texture(const Parameters& p, const MaterialContext& context, const std::string& key, float fallback, float min, float max) {
     const float value = p.check_range(key, p.get_float(key, fallback), min, max);
-    if (FloatTexture texture = read_image_texture<float>(p, key, TextureEncoding::Linear, min, max)) return texture;
+    if (FloatTexture texture = read_image_texture<float>(p, context, key, TextureEncoding::Linear, min, max)) return texture;
     return make_constant_texture(value);
 }
 
@@ -133,11 +137,11 @@ MicrofacetRoughness smooth_roughness() {
     return MicrofacetRoughness(zero, zero, 0.0f);
 }
 
-MicrofacetRoughness read_microfacet_roughness(const Parameters& p, float fallback) {
+MicrofacetRoughness read_microfacet_roughness(const Parameters& p, const MaterialContext& context, float fallback) {
     const bool per_direction = p.has("roughness_u") || p.has("roughness_v") || p.has("roughness_u_texture") ||
                                p.has("roughness_v_texture");
     if (!per_direction) {
-        FloatTexture roughness = read_float_texture(p, "roughness", fallback, 0.0f, 1.0f);
+        FloatTexture roughness = read_float_texture(p, context, "roughness", fallback, 0.0f, 1.0f);
         const float anisotropy = p.check_range("anisotropy", p.get_float("anisotropy", 0.0f), 0.0f, 1.0f);
         return MicrofacetRoughness(roughness, roughness, anisotropy);
     }
@@ -148,8 +152,8 @@ MicrofacetRoughness read_microfacet_roughness(const Parameters& p, float fallbac
     for (const char* direction : {"roughness_u", "roughness_v"})
         if (!p.has(direction) && !p.has(std::string(direction) + "_texture"))
             throw InputError(p.where(direction), "is required with the other of 'roughness_u' and 'roughness_v'");
-    return MicrofacetRoughness(read_float_texture(p, "roughness_u", fallback, 0.0f, 1.0f),
-                               read_float_texture(p, "roughness_v", fallback, 0.0f, 1.0f), 0.0f);
+    return MicrofacetRoughness(read_float_texture(p, context, "roughness_u", fallback, 0.0f, 1.0f),
+                               read_float_texture(p, context, "roughness_v", fallback, 0.0f, 1.0f), 0.0f);
 }
 
 void refuse_unknown_keys(const Parameters& p) {

@@ -15,9 +15,10 @@ const BSDF* MixMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
 namespace {
 
 // One part of the mix, described inline by the object at `key`.
-std::shared_ptr<const Material> read_part(const Parameters& p, const std::string& key, const MaterialBuilder& build_part) {
+std::shared_ptr<const Material> read_part(const Parameters& p, const MaterialContext& context, const std::string& key,
+                                          const MaterialBuilder& build_part) {
     const Parameters part = p.child(key);
-    std::shared_ptr<const Material> material = build_part(part);
+    std::shared_ptr<const Material> material = build_part(part, context);
     // A part has no name of its own and emits nothing: every key of its object must be one it read.
     refuse_unknown_keys(part);
     return material;
@@ -27,13 +28,13 @@ std::shared_ptr<const Material> read_part(const Parameters& p, const std::string
 
 // "first" and "second": the two materials, as objects with a "type"; "weight" (or
 // "weight_texture"): the fraction of `second`, in [0, 1], default 0.5.
-std::unique_ptr<Material> make_mix_material(const Parameters& p, const MaterialBuilder& build_part) {
+std::unique_ptr<Material> make_mix_material(const Parameters& p, const MaterialContext& context, const MaterialBuilder& build_part) {
     if (p.has("materials"))
         throw InputError(p.where("materials"), "naming other materials of the scene is not supported yet; describe the "
                                                "two parts inline as \"first\": {...} and \"second\": {...}");
-    std::shared_ptr<const Material> first = read_part(p, "first", build_part);
-    std::shared_ptr<const Material> second = read_part(p, "second", build_part);
-    FloatTexture weight = read_float_texture(p, "weight", 0.5f, 0.0f, 1.0f);
+    std::shared_ptr<const Material> first = read_part(p, context, "first", build_part);
+    std::shared_ptr<const Material> second = read_part(p, context, "second", build_part);
+    FloatTexture weight = read_float_texture(p, context, "weight", 0.5f, 0.0f, 1.0f);
     return std::make_unique<MixMaterial>(std::move(first), std::move(second), std::move(weight));
 }
 

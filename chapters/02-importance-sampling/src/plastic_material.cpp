@@ -15,11 +15,11 @@ const BSDF* PlasticMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
 
 // "albedo" (or "albedo_texture") of the base, "ior" of the coating (default 1.5), and for the
 // rough variant the roughness of the coating.
-std::unique_ptr<Material> make_plastic_material(const Parameters& p, bool rough) {
-    SpectrumTexture albedo = read_spectrum_texture(p, "albedo", Spectrum(0.5f), 0.0f, 1.0f);
+std::unique_ptr<Material> make_plastic_material(const Parameters& p, const MaterialContext& context, bool rough) {
+    SpectrumTexture albedo = read_spectrum_texture(p, context, "albedo", Spectrum(0.5f), 0.0f, 1.0f);
     const float eta = read_index_of_refraction(p, 1.5f);
     return std::make_unique<PlasticMaterial>(std::move(albedo), eta,
-                                             rough ? read_microfacet_roughness(p, DefaultRoughness) : smooth_roughness());
+                                             rough ? read_microfacet_roughness(p, context, DefaultRoughness) : smooth_roughness());
 }
 
 }  // namespace freezeray::ch02

@@ -3,6 +3,7 @@
 
 #include "freezeray/ch02/materials.hpp"
 #include "freezeray/ch02/path_tracer.hpp"
+#include "freezeray/ch02/texture_storage.hpp"
 #include "freezeray/error.hpp"
 
 #include <string>
@@ -16,37 +17,37 @@ namespace {
 struct MaterialEntry {
     const char* name;
     const char* summary;
-    std::unique_ptr<Material> (*make)(const Parameters&);
+    std::unique_ptr<Material> (*make)(const Parameters&, const MaterialContext&);
 };
 
-std::unique_ptr<Material> make_mix_part(const Parameters& p);
+std::unique_ptr<Material> make_mix_part(const Parameters& p, const MaterialContext& context);
 
 const MaterialEntry chapter02_materials[] = {
     {"diffuse", "Lambertian reflector, cosine-sampled: albedo or albedo_texture (MTL Kd, map_Kd)",
      ch02::make_diffuse_material},
     {"mirror", "perfect mirror: reflectance at every angle", ch02::make_mirror_material},
     {"conductor", "smooth metal: preset material, or eta and k, tinted by specular_reflectance (MTL Ks)",
-     [](const Parameters& p) { return ch02::make_conductor_material(p, false); }},
+     [](const Parameters& p, const MaterialContext& c) { return ch02::make_conductor_material(p, c, false); }},
     {"roughconductor", "rough metal (GGX microfacets): as conductor, plus roughness",
-     [](const Parameters& p) { return ch02::make_conductor_material(p, true); }},
-    {"dielectric", "smooth glass: ior (MTL Ni)", [](const Parameters& p) { return ch02::make_dielectric_material(p, false); }},
+     [](const Parameters& p, const MaterialContext& c) { return ch02::make_conductor_material(p, c, true); }},
+    {"dielectric", "smooth glass: ior (MTL Ni)", [](const Parameters& p, const MaterialContext& c) { return ch02::make_dielectric_material(p, c, false); }},
     {"roughdielectric", "rough glass (GGX microfacets): ior, roughness",
-     [](const Parameters& p) { return ch02::make_dielectric_material(p, true); }},
+     [](const Parameters& p, const MaterialContext& c) { return ch02::make_dielectric_material(p, c, true); }},
     {"plastic", "diffuse base under a smooth dielectric coating: albedo, ior",
-     [](const Parameters& p) { return ch02::make_plastic_material(p, false); }},
+     [](const Parameters& p, const MaterialContext& c) { return ch02::make_plastic_material(p, c, false); }},
     {"roughplastic", "diffuse base under a rough coating (GGX microfacets): albedo, ior, roughness",
-     [](const Parameters& p) { return ch02::make_plastic_material(p, true); }},
+     [](const Parameters& p, const MaterialContext& c) { return ch02::make_plastic_material(p, c, true); }},
     {"mix", "two materials blended by a weight: first, second, weight",
-     [](const Parameters& p) { return ch02::make_mix_material(p, make_mix_part); }},
+     [](const Parameters& p, const MaterialContext& c) { return ch02::make_mix_material(p, c, make_mix_part); }},
 };
 
 // A part of a mix material: any material of this chapter, described inline.
-std::unique_ptr<Material> make_mix_part(const Parameters& p) {
+std::unique_ptr<Material> make_mix_part(const Parameters& p, const MaterialContext& context) {
     const std::string type = p.require_string("type");
     std::vector<std::string> names;
     for (const MaterialEntry& entry : chapter02_materials) {
         if (type == entry.name) {
-            std::unique_ptr<Material> material = entry.make(p);
+            std::unique_ptr<Material> material = entry.make(p, context);
             material->type = type;
             return material;
         }
@@ -60,8 +61,10 @@ std::unique_ptr<Material> make_mix_part(const Parameters& p) {
 
 void register_chapter02(Registry& registry) {
     for (const MaterialEntry& entry : chapter02_materials) registry.add_material(entry.name, 2, entry.summary, entry.make);
+    registry.add_texture_layout("linear", 2, "rows of texels one after another, as the image file stores them",
+                                [](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); });
     registry.add_integrator("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
-                            [](const RenderSettings& settings) {
+                            [](const RenderSettings& settings, const Parameters&) {
                                 return std::make_unique<ch02::ImportanceSampledPathTracer>(settings.max_depth);
                             });
 }

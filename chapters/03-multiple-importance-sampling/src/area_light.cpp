@@ -3,7 +3,7 @@
 
 #include "freezeray/ch02/cosine_lambertian.hpp"
 #include "freezeray/triangle_intersection.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include <cmath>
 
@@ -31,7 +31,7 @@ TriangleLight::TriangleLight(const TriangleMesh& mesh, std::uint32_t triangle, c
 
 // BOOK(area-light-sample)
 std::optional<LightSample> TriangleLight::sample_li(const Vec3& reference, const Vec2& u) const {
-    const Vec2 b = sample_uniform_triangle(u);
+    const Vec2 b = ch01::sample_uniform_triangle(u);
     const Vec3 point = (1.0f - b.x - b.y) * p0_ + b.x * p1_ + b.y * p2_;
     const Vec3 to_light = point - reference;
     const float distance_squared = glm::dot(to_light, to_light);
@@ -57,7 +57,7 @@ float TriangleLight::pdf_li(const Vec3& reference, const Vec3& wi) const {
 }
 
 std::optional<LightEmissionSample> TriangleLight::sample_le(const Vec2& u_position, const Vec2& u_direction) const {
-    const Vec2 b = sample_uniform_triangle(u_position);
+    const Vec2 b = ch01::sample_uniform_triangle(u_position);
     const Vec3 point = (1.0f - b.x - b.y) * p0_ + b.x * p1_ + b.y * p2_;
     // Cosine-weighted directions about the front normal: the distribution of a Lambertian emitter.
     const Vec3 local = ch02::sample_cosine_hemisphere(u_direction);

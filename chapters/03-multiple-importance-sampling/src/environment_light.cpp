@@ -3,7 +3,7 @@
 
 #include "freezeray/ch03/directional_light.hpp"
 #include "freezeray/error.hpp"
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -131,21 +131,21 @@ void EnvironmentMapLight::preprocess(const Bounds3& scene_bounds) {
 
 std::optional<LightSample> ConstantEnvironmentLight::sample_li(const Vec3& reference, const Vec2& u) const {
     (void)reference;
-    return LightSample{radiance_, sample_uniform_sphere(u), uniform_sphere_pdf(), Vec3(0.0f), true};
+    return LightSample{radiance_, ch01::sample_uniform_sphere(u), ch01::uniform_sphere_pdf(), Vec3(0.0f), true};
 }
 
-float ConstantEnvironmentLight::pdf_li(const Vec3&, const Vec3&) const { return uniform_sphere_pdf(); }
+float ConstantEnvironmentLight::pdf_li(const Vec3&, const Vec3&) const { return ch01::uniform_sphere_pdf(); }
 
 std::optional<LightEmissionSample> ConstantEnvironmentLight::sample_le(const Vec2& u_position,
                                                                        const Vec2& u_direction) const {
     if (!(scene_radius_ > 0.0f)) return std::nullopt;
-    const Vec3 wi = sample_uniform_sphere(u_direction);
+    const Vec3 wi = ch01::sample_uniform_sphere(u_direction);
     const Ray ray = ray_through_bounding_disk(-wi, scene_center_, scene_radius_, u_position);
-    return LightEmissionSample{ray, -wi, radiance_, 1.0f / (Pi * scene_radius_ * scene_radius_), uniform_sphere_pdf()};
+    return LightEmissionSample{ray, -wi, radiance_, 1.0f / (Pi * scene_radius_ * scene_radius_), ch01::uniform_sphere_pdf()};
 }
 
 EmissionDensity ConstantEnvironmentLight::pdf_le(const Ray&, const Vec3&) const {
-    return {1.0f / (Pi * scene_radius_ * scene_radius_), uniform_sphere_pdf()};
+    return {1.0f / (Pi * scene_radius_ * scene_radius_), ch01::uniform_sphere_pdf()};
 }
 
 Spectrum ConstantEnvironmentLight::power() const {

@@ -1,7 +1,7 @@
 // Point lights (pbrt-v3, section 12.2).
 #include "freezeray/ch03/point_light.hpp"
 
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include <cmath>
 
@@ -26,11 +26,11 @@ std::optional<LightSample> PointLight::sample_li(const Vec3& reference, const Ve
 // END BOOK
 
 std::optional<LightEmissionSample> PointLight::sample_le(const Vec2&, const Vec2& u_direction) const {
-    const Vec3 direction = sample_uniform_sphere(u_direction);
-    return LightEmissionSample{Ray{position_, direction}, Vec3(0.0f), intensity_, 1.0f, uniform_sphere_pdf()};
+    const Vec3 direction = ch01::sample_uniform_sphere(u_direction);
+    return LightEmissionSample{Ray{position_, direction}, Vec3(0.0f), intensity_, 1.0f, ch01::uniform_sphere_pdf()};
 }
 
-EmissionDensity PointLight::pdf_le(const Ray&, const Vec3&) const { return {0.0f, uniform_sphere_pdf()}; }
+EmissionDensity PointLight::pdf_le(const Ray&, const Vec3&) const { return {0.0f, ch01::uniform_sphere_pdf()}; }
 
 std::unique_ptr<Light> make_point_light(const Parameters& p) {
     const Vec3 position = p.require_vec3("position");

@@ -14,7 +14,7 @@ namespace {
 
 void add_path_tracer(Registry& registry, const std::string& name, const std::string& summary,
                      ch03::LightSamplingSettings variant) {
-    registry.add_integrator(name, 3, summary, [variant](const RenderSettings& settings) {
+    registry.add_integrator(name, 3, summary, [variant](const RenderSettings& settings, const Parameters&) {
         ch03::LightSamplingSettings s = variant;
         s.max_depth = settings.max_depth;
         return std::make_unique<ch03::LightSamplingPathTracer>(s);

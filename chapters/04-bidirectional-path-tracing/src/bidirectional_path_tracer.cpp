@@ -4,6 +4,7 @@
 #include "freezeray/ch02/path_tracer.hpp"
 #include "freezeray/ch04/bdpt_mis_weight.hpp"
 #include "freezeray/ch04/strategy_images.hpp"
+#include "freezeray/error.hpp"
 #include "freezeray/ch04/subpaths.hpp"
 
 #include <cmath>
@@ -31,7 +32,7 @@ StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampl
         const PathVertex& qs = light[s - 1];
         if (!qs.connectible()) return result;
         if (s == 1 && qs.light->type() != LightType::Area) return result;  // see the chapter's README
-        const std::optional<CameraImportanceSample> camera_sample = scene.camera->sample_wi(qs.position);
+        const std::optional<CameraImportanceSample> camera_sample = sample_camera_wi(*scene.camera, qs.position);
         if (!camera_sample || camera_sample->pdf <= 0.0f || camera_sample->importance <= 0.0f) return result;
         sampled.type = VertexType::Camera;
         sampled.position = scene.camera->position();
@@ -122,7 +123,7 @@ RenderResult BidirectionalPathTracer::render(const Scene& scene, const RenderSet
     const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
     const PinholeCamera& pinhole = *scene.camera;
     const StrategyLayers layers(settings_.max_depth);
-    const bool strategy_images = settings.strategy_images;
+    const bool strategy_images = !settings_.strategy_images_folder.empty();
 
     const LightPathEstimator estimator = [&](std::uint32_t slot, PCG32& random, ScratchArena& arena,
                                              SplatBuffer& splats) {
@@ -145,9 +146,25 @@ RenderResult BidirectionalPathTracer::render(const Scene& scene, const RenderSet
     std::vector<Image> layer_images;
     RenderResult result = render_light_paths(scene, settings, progress, estimator,
                                              strategy_images ? layers.layer_count() : 0, &layer_images);
-    if (strategy_images) result.extra_images = layers.named_images(layer_images);
+    if (strategy_images) {
+        result.extra_images = layers.named_images(layer_images);
+        result.extra_images_folder = settings_.strategy_images_folder;
+    }
     return result;
 }
 // END BOOK
+
+BidirectionalSettings read_bidirectional_settings(const Parameters& options, int max_depth,
+                                                  ch03::MisHeuristic heuristic) {
+    BidirectionalSettings s;
+    s.max_depth = max_depth;
+    s.heuristic = heuristic;
+    s.strategy_images_folder = options.get_string("bdpt_strategies", s.strategy_images_folder);
+    if (options.has("bdpt_strategies")) {
+        if (s.strategy_images_folder.empty()) throw InputError(options.where("bdpt_strategies"), "names no folder");
+        check_strategy_images_folder(s.strategy_images_folder, options.where("bdpt_strategies"));
+    }
+    return s;
+}
 
 }  // namespace freezeray::ch04

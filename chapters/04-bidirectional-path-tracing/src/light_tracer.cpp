@@ -29,7 +29,7 @@ float adjoint_sample_factor(const BSDFSample& sample, const Vec3& wo, const Vec3
 // BOOK(connect-to-camera)
 std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit& hit, const BSDF& bsdf, const Frame& frame,
                                                   const Vec3& wo_world, const Spectrum& beta) {
-    const std::optional<CameraImportanceSample> camera = scene.camera->sample_wi(hit.position);
+    const std::optional<CameraImportanceSample> camera = sample_camera_wi(*scene.camera, hit.position);
     if (!camera || camera->pdf <= 0.0f || camera->importance <= 0.0f) return std::nullopt;
     // The light arrives from wo_world and leaves towards the camera: in the radiance convention
     // of chapter 02's BSDFs that is f(wo = towards the camera, wi = towards the light). That is
@@ -57,7 +57,7 @@ Vec3 emission_origin_error(const Vec3& point) { return glm::abs(point) * 0x1p-18
 std::optional<CameraConnection> connect_light_to_camera(const Scene& scene, const LightEmissionSample& emission,
                                                         float light_probability) {
     const Vec3& point = emission.ray.origin;
-    const std::optional<CameraImportanceSample> camera = scene.camera->sample_wi(point);
+    const std::optional<CameraImportanceSample> camera = sample_camera_wi(*scene.camera, point);
     if (!camera || camera->pdf <= 0.0f || camera->importance <= 0.0f) return std::nullopt;
     // An area light is a one-sided Lambertian emitter: the same radiance towards the camera as
     // along the sampled ray, if the camera is in front of it.

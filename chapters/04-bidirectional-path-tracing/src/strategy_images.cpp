@@ -1,6 +1,10 @@
 // Strategy images and their grid (book chapter 04).
 #include "freezeray/ch04/strategy_images.hpp"
 
+#include "freezeray/error.hpp"
+
+#include <filesystem>
+
 #include <algorithm>
 #include <string>
 
@@ -47,6 +51,21 @@ std::vector<std::pair<std::string, Image>> StrategyLayers::named_images(const st
     images.emplace_back("grid-weighted.png", strategy_grid(weighted, length_, width, height));
     images.emplace_back("grid-unweighted.png", strategy_grid(unweighted, length_, width, height));
     return images;
+}
+
+void check_strategy_images_folder(const std::string& folder_name, const std::string& where) {
+    const std::filesystem::path folder(folder_name);
+    std::error_code error;
+    if (std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
+        throw InputError(where, folder_name + " is a file, not a folder");
+    std::filesystem::path probe = folder / "grid-weighted.png";
+    if (!std::filesystem::exists(folder, error)) {  // the nearest folder that exists will hold it
+        std::filesystem::path parent = folder;
+        do parent = parent.has_parent_path() ? parent.parent_path() : std::filesystem::path(".");
+        while (!std::filesystem::exists(parent, error) && parent != ".");
+        probe = parent / "strategy-images-probe.png";
+    }
+    check_image_writable(probe.string());
 }
 
 }  // namespace freezeray::ch04

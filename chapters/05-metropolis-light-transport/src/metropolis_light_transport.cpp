@@ -6,7 +6,7 @@
 #include "freezeray/parallel.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/scene.hpp"
-#include "freezeray/splat_batches.hpp"
+#include "freezeray/ch04/splat_batches.hpp"
 #include "freezeray/ch02/path_tracer.hpp"
 #include "freezeray/ch03/piecewise_constant.hpp"
 #include "freezeray/ch04/subpaths.hpp"
@@ -126,6 +126,25 @@ Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, co
 }
 // END BOOK
 
+MltSettings read_mlt_settings(const Parameters& p, int max_depth, bool multiplexed) {
+    MltSettings s;
+    s.max_depth = max_depth;
+    s.multiplexed = multiplexed;
+    s.large_step_probability = p.get_float("mlt_large_step", s.large_step_probability);
+    if (!(s.large_step_probability > 0.0f && s.large_step_probability <= 1.0f))
+        throw InputError(p.where("mlt_large_step"), "must be a probability in (0, 1]");
+    s.sigma = p.get_float("mlt_sigma", s.sigma);
+    if (!(s.sigma > 0.0f && s.sigma <= 1.0f))
+        throw InputError(p.where("mlt_sigma"), "must be in (0, 1] (a step in primary sample space, whose side is 1)");
+    const long long bootstrap = p.get_long("mlt_bootstrap", static_cast<long long>(s.bootstrap_samples));
+    if (bootstrap < 1 || bootstrap > (1LL << 32)) throw InputError(p.where("mlt_bootstrap"), "must be between 1 and 2^32");
+    s.bootstrap_samples = static_cast<std::uint64_t>(bootstrap);
+    const long long chains = p.get_long("mlt_chains", s.chains);
+    if (chains < 1 || chains > (1 << 20)) throw InputError(p.where("mlt_chains"), "must be between 1 and 2^20");
+    s.chains = static_cast<int>(chains);
+    return s;
+}
+
 MetropolisLightTransport::MetropolisLightTransport(const MltSettings& settings) : settings_(settings) {
     if (settings_.max_depth <= 0) settings_.max_depth = ch02::DefaultMaxDepth;
 }
@@ -134,23 +153,19 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
     if (settings.resume)
         throw InputError("--resume", "an mlt render cannot be resumed: its Markov chains' states are not saved; render "
                                      "again with another --seed and `merge` the two renders");
-    MltSettings mlt = settings_;
-    if (settings.mlt_large_step_probability > 0.0) mlt.large_step_probability = static_cast<float>(settings.mlt_large_step_probability);
-    if (settings.mlt_sigma > 0.0) mlt.sigma = static_cast<float>(settings.mlt_sigma);
-    if (settings.mlt_bootstrap_samples > 0) mlt.bootstrap_samples = settings.mlt_bootstrap_samples;
-    if (settings.mlt_chains > 0) mlt.chains = settings.mlt_chains;
+    const MltSettings& mlt = settings_;
 
     const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
-    const ch04::BidirectionalSettings bidirectional{mlt.max_depth, ch03::MisHeuristic::Power};
+    const ch04::BidirectionalSettings bidirectional{mlt.max_depth, ch03::MisHeuristic::Power, ""};
     const PinholeCamera& camera = *scene.camera;
     const int width = camera.width(), height = camera.height();
     const auto pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
     const int threads = resolve_thread_count(settings.threads);
 
     RenderResult result;
-    SplatBatches rounds(settings, progress, pixels);  // the bootstrap's time counts as render time
+    ch04::SplatBatches rounds(settings, progress, pixels);  // the bootstrap's time counts as render time
     const std::string name = mlt.multiplexed ? "mlt-multiplexed" : "mlt";  // for its notes and warnings
-    SplatFilm film(width, height);
+    ch04::SplatFilm film(width, height);
     // --sample-offset gives another, independent render of the same seed (for `merge`): MLT has
     // no per-pixel sample indices, so the offset enters its seed.
     const std::uint64_t seed =
@@ -198,13 +213,13 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
         // splats in its own buffer, added to the film in chain order (deterministic for any
         // thread count). Expected-value splatting (Veach 1997, section 11.3.3): both the proposal
         // and the current state are splatted, weighted by a and 1 - a, each as c b / I.
-        std::vector<SplatBuffer> buffers(chain_count, SplatBuffer(width, height));
+        std::vector<ch04::SplatBuffer> buffers(chain_count, ch04::SplatBuffer(width, height));
         const double b = bootstrap.b;
         while (rounds.next_batch(result)) {
             parallel_for(chain_count, threads, [&](std::size_t c, int thread) {
                 thread_local ch04::SubpathStorage storage;
                 Chain& chain = chains[c];
-                SplatBuffer& buffer = buffers[c];
+                ch04::SplatBuffer& buffer = buffers[c];
                 buffer.clear();
                 const std::uint64_t mutations = pixels / chain_count + (c < pixels % chain_count ? 1 : 0);
                 for (std::uint64_t m = 0; m < mutations; ++m) {
@@ -234,7 +249,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
                 }
                 progress.advance(mutations);
             });
-            for (const SplatBuffer& buffer : buffers) film.add(buffer);  // in chain order
+            for (const ch04::SplatBuffer& buffer : buffers) film.add(buffer);  // in chain order
             if (!rounds.batch_done(film, result)) break;
         }
         // END BOOK

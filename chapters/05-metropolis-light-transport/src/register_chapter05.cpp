@@ -1,4 +1,4 @@
-// Chapter 05's registrations.
+// Chapter 05's registrations: the two Metropolis integrators and their options.
 #include "freezeray/ch05/register_chapter05.hpp"
 
 #include "freezeray/ch05/metropolis_light_transport.hpp"
@@ -6,22 +6,39 @@
 namespace freezeray {
 
 void register_chapter05(Registry& registry) {
+    const ch05::MltSettings defaults;
+    const std::vector<std::string> mlt_integrators = {"mlt", "mlt-multiplexed"};
+    auto declare = [&](const char* flag, const char* key, OptionType type, const std::string& help) {
+        registry.add_option({flag, key, type, OptionTarget::Integrator, help, mlt_integrators, 5});
+    };
+    auto number = [](double value) {
+        std::string text = std::to_string(value);
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.') text.pop_back();
+        return text;
+    };
+    declare("--mlt-large-step", "mlt_large_step", OptionType::Number,
+            "mlt: the probability of a large step (default " + number(defaults.large_step_probability) + ")");
+    declare("--mlt-sigma", "mlt_sigma", OptionType::Number,
+            "mlt: the standard deviation of a small step in primary sample space (default " + number(defaults.sigma) + ")");
+    declare("--mlt-bootstrap", "mlt_bootstrap", OptionType::Integer,
+            "mlt: the number of bootstrap paths (default " + std::to_string(defaults.bootstrap_samples) + ")");
+    declare("--mlt-chains", "mlt_chains", OptionType::Integer,
+            "mlt: the number of Markov chains (default " + std::to_string(defaults.chains) + ")");
+
     registry.add_integrator("mlt", 5,
                             "Metropolis light transport in primary sample space, driving bdpt: Markov chains that "
                             "spend their samples where the light is",
-                            [](const RenderSettings& settings) {
-                                ch05::MltSettings s;
-                                s.max_depth = settings.max_depth;
-                                return std::make_unique<ch05::MetropolisLightTransport>(s);
+                            [](const RenderSettings& settings, const Parameters& options) {
+                                return std::make_unique<ch05::MetropolisLightTransport>(
+                                    ch05::read_mlt_settings(options, settings.max_depth, false));
                             });
     registry.add_integrator("mlt-multiplexed", 5,
                             "multiplexed Metropolis light transport: each state one path length and one bdpt strategy, "
                             "chosen by the chain",
-                            [](const RenderSettings& settings) {
-                                ch05::MltSettings s;
-                                s.max_depth = settings.max_depth;
-                                s.multiplexed = true;
-                                return std::make_unique<ch05::MetropolisLightTransport>(s);
+                            [](const RenderSettings& settings, const Parameters& options) {
+                                return std::make_unique<ch05::MetropolisLightTransport>(
+                                    ch05::read_mlt_settings(options, settings.max_depth, true));
                             });
 }
 

@@ -20,9 +20,6 @@ struct Hit {
     std::uint32_t triangle = 0;   // index into that mesh's triangles
     std::uint32_t material = 0;   // index into Scene::materials
 
-    // True when the ray arrived on the front side (the side the geometric normal points to).
-    bool front_face(const Vec3& ray_direction) const { return glm::dot(geometric_normal, ray_direction) < 0.0f; }
-
     // A ray leaving this hit in direction `d`, offset so that it cannot hit this triangle again.
     Ray spawn_ray(const Vec3& d) const {
         return Ray{offset_ray_origin(position, position_error, geometric_normal, d), d};

@@ -6,7 +6,6 @@
 #include "freezeray/random.hpp"
 #include "freezeray/ray.hpp"
 #include "freezeray/scratch_arena.hpp"
-#include "freezeray/splat_film.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -21,8 +20,9 @@ namespace freezeray {
 class Scene;
 class Progress;
 
-// How long to render and with what. Plain data with defaults; parsed in one place (cli.cpp,
-// with defaults from the scene's "render" block).
+// How long to render and with what: what every integrator shares. Plain data with defaults;
+// parsed in one place (cli.cpp, with defaults from the scene's "render" block). An integrator's
+// own settings come to its factory as Parameters (registry.hpp).
 struct RenderSettings {
     std::uint64_t samples_per_pixel = 16;  // used when time_seconds and target_error are 0
     double time_seconds = 0.0;             // > 0: render until this much wall time has passed
@@ -44,15 +44,6 @@ struct RenderSettings {
     // > 0: passes are shortened so that none takes much longer than this (checkpoints are
     // written between passes).
     double max_pass_seconds = 0.0;
-    // True to make the per-strategy images of bidirectional path tracing (`--bdpt-strategies`):
-    // RenderResult::extra_images. Only integrators with has_strategy_images() make them.
-    bool strategy_images = false;
-    // Metropolis light transport (chapter 05; 0: the integrator's defaults): the probability of a
-    // large step, the small steps' standard deviation, the bootstrap paths, the chains.
-    double mlt_large_step_probability = 0.0;
-    double mlt_sigma = 0.0;
-    std::uint64_t mlt_bootstrap_samples = 0;
-    int mlt_chains = 0;
 };
 
 struct RenderResult {
@@ -64,9 +55,11 @@ struct RenderResult {
     std::uint64_t invalid_samples = 0;    // NaN, Inf or negative samples (a bug when non-zero)
     double estimated_relative_mse = -1.0; // from `variance`; negative when not estimable
     bool interrupted = false;
-    // Extra images the integrator made besides the estimate, by file name (bidirectional path
-    // tracing's per-strategy images, RenderSettings::strategy_images); written by `render`.
+    // Extra images the integrator made besides the estimate, by file name, and the folder they go
+    // into (an integrator's own option chooses it, and checks it before rendering). `render`
+    // makes the folder after the render and writes them there.
     std::vector<std::pair<std::string, Image>> extra_images;
+    std::string extra_images_folder;
     // What the user should know about this render (printed by `render` as warnings and notes:
     // a scene whose light no path reaches, a Markov chain's acceptance rate).
     std::vector<std::string> warnings;
@@ -82,13 +75,9 @@ public:
     // directional lights, which no ray can hit (chapter 03).
     virtual bool samples_lights() const { return false; }
 
-    // False when a saved render cannot be continued exactly (`--resume`): a splatting film's
-    // state is not a per-pixel count that a pass can go on from (render_light_paths).
+    // False when a saved render cannot be continued exactly (`--resume`): one whose film's
+    // state is not a per-pixel sample count that a pass can go on from.
     virtual bool resumable() const { return true; }
-
-    // True when the integrator combines several sampling strategies whose separate images it
-    // can write (RenderSettings::strategy_images; chapter 04).
-    virtual bool has_strategy_images() const { return false; }
 };
 
 // One sample of the radiance arriving along a camera ray. All randomness from `random`; scratch
@@ -99,23 +88,6 @@ using RadianceEstimator = std::function<Spectrum(const Ray& ray, PCG32& random, 
 // sample count, the time budget or the target error is reached; each sample from its own stream.
 RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, Progress& progress,
                            const RadianceEstimator& li);
-
-// One light path (or, for bidirectional path tracing, one pair of subpaths) for work slot
-// `slot` in [0, pixel count): everything it contributes goes into `splats`, at any pixel. All
-// randomness from `random`; scratch allocations in `arena`, reset before every call.
-using LightPathEstimator =
-    std::function<void(std::uint32_t slot, PCG32& random, ScratchArena& arena, SplatBuffer& splats)>;
-
-// The image loop of integrators that splat (chapter 04): batches of one light path per slot
-// (pixel count paths per batch, each from make_pixel_stream(seed, slot, sample)), so that a
-// batch adds one "sample per pixel", until the sample count, the time or the target error is
-// reached. A stop request ends the render between batches. The result's film is
-// SplatFilm::to_film of the batches done. Refuses settings.resume with an InputError.
-// With extra_layers > 0, splats into layers 1 ... extra_layers are summed into extra images,
-// returned in `layers` (index 0 for layer 1) when it is not null.
-RenderResult render_light_paths(const Scene& scene, const RenderSettings& settings, Progress& progress,
-                                const LightPathEstimator& estimator, int extra_layers = 0,
-                                std::vector<Image>* layers = nullptr);
 
 // An integrator that estimates each pixel independently from camera paths: it only says how one
 // camera ray's radiance is estimated (li); the image loop, the film and the passes are shared.

@@ -11,7 +11,6 @@ namespace freezeray {
 
 using Vec2 = glm::vec2;
 using Vec3 = glm::vec3;
-using Point2i = glm::ivec2;
 using Mat3 = glm::mat3;
 using Mat4 = glm::mat4;
 
@@ -61,15 +60,6 @@ struct Frame {
 // Direction (x, y, z) from spherical coordinates with theta measured from +z.
 inline Vec3 spherical_direction(float sin_theta, float cos_theta, float phi) {
     return Vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta);
-}
-
-// Polar angle theta in [0, pi] of a unit vector, measured from +z.
-inline float spherical_theta(const Vec3& v) { return std::acos(glm::clamp(v.z, -1.0f, 1.0f)); }
-
-// Azimuth phi in [0, 2 pi) of a vector around +z.
-inline float spherical_phi(const Vec3& v) {
-    const float phi = std::atan2(v.y, v.x);
-    return phi < 0.0f ? phi + 2.0f * Pi : phi;
 }
 
 // Axis-aligned bounding box.

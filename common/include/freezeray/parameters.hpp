@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -26,11 +27,16 @@ public:
     // "scene.json: /materials/light/albedo" for a key of this object.
     std::string where(const std::string& key) const;
     std::string where() const;
+    // Says that `key` was given somewhere else than in this object (a command-line flag): messages
+    // about it then name that place.
+    void set_location(const std::string& key, std::string location) { locations_[key] = std::move(location); }
 
     bool has(const std::string& key) const;
     float get_float(const std::string& key, float fallback) const;
     float require_float(const std::string& key) const;
     int get_int(const std::string& key, int fallback) const;
+    // A whole number that may exceed 32 bits (a sample count).
+    long long get_long(const std::string& key, long long fallback) const;
     bool get_bool(const std::string& key, bool fallback) const;
     std::string get_string(const std::string& key, const std::string& fallback) const;
     std::string require_string(const std::string& key) const;
@@ -58,6 +64,7 @@ private:
     std::string path_;
     std::string base_directory_;
     mutable std::set<std::string> asked_;
+    std::map<std::string, std::string> locations_;
 };
 
 }  // namespace freezeray

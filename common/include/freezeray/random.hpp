@@ -70,7 +70,7 @@ inline PCG32 make_pixel_stream(std::uint64_t seed, std::uint32_t pixel_index, st
     return PCG32(mix_bits(key + sample_index), key);
 }
 
-// The stream for an independent chain or job (MLT chains, light paths, test cases).
+// The stream for an independent chain or job (Markov chains, light paths, test cases).
 inline PCG32 make_chain_stream(std::uint64_t seed, std::uint64_t chain_index) {
     return PCG32(mix_bits(seed * 0x9e3779b97f4a7c15ULL + chain_index), mix_bits(chain_index ^ 0x632be59bd9b4e019ULL));
 }

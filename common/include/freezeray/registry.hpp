@@ -8,7 +8,9 @@
 #include "freezeray/light.hpp"
 #include "freezeray/material.hpp"
 #include "freezeray/mesh.hpp"
+#include "freezeray/options.hpp"
 #include "freezeray/parameters.hpp"
+#include "freezeray/texture_storage.hpp"
 
 #include <functional>
 #include <map>
@@ -19,22 +21,44 @@
 
 namespace freezeray {
 
-using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const RenderSettings&)>;
-using MaterialFactory = std::function<std::unique_ptr<Material>(const Parameters&)>;
-using AcceleratorFactory = std::function<std::unique_ptr<Accelerator>()>;
+class Registry;
+
+// What a material's factory needs besides its own parameters: the registry (to make texture
+// storage) and the layout the scene stores its image textures in.
+struct MaterialContext {
+    const Registry& registry;
+    std::string texture_layout;  // a registered texture layout ("linear"; chapter 08 adds "tiled")
+};
+
+// Each factory gets its capability's settings as Parameters: the scene's block (integrators: the
+// "render" block, accelerators: the "accelerator" block) with the command-line values of the
+// options its chapter declared given over it. A factory reads them into its settings struct,
+// whose defaults are written once, and checks them (errors name the JSON path or the flag).
+using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const RenderSettings&, const Parameters& options)>;
+using MaterialFactory = std::function<std::unique_ptr<Material>(const Parameters&, const MaterialContext&)>;
+using AcceleratorFactory = std::function<std::unique_ptr<Accelerator>(const Parameters& options)>;
+// Stores a decoded image in a texture layout.
+using TextureLayoutFactory = std::function<std::shared_ptr<const TextureStorage>(const Image& image)>;
 using LightFactory = std::function<std::unique_ptr<Light>(const Parameters&)>;
 // An area light for one emissive triangle of a mesh (world space) with the given emitted radiance.
 using AreaLightFactory =
     std::function<std::unique_ptr<Light>(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission)>;
 
-// The kinds of things the registry names. Texture layouts join in a later chapter.
+// The kinds of things the registry names.
 enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout };
 const char* capability_kind_name(CapabilityKind kind);
+
+// One line of a course's table of contents: the chapter that introduces a named capability.
+struct CatalogueEntry {
+    CapabilityKind kind;
+    const char* name;
+    int chapter;
+};
 
 class Registry {
 public:
     // program: the executable's name ("ch01", "freezeray"); chapter: the last chapter it
-    // registers. The constructor registers what lives in common/ (diffuse, bruteforce).
+    // registers. The constructor registers what lives in common/: the bruteforce accelerator.
     Registry(std::string program, int chapter);
 
     const std::string& program() const { return program_; }
@@ -50,18 +74,46 @@ public:
     // The light made for every emissive triangle (registered as light "area"). Without it (a
     // renderer before chapter 03) emissive triangles are found only by hitting them.
     void add_area_light(int chapter, const std::string& summary, AreaLightFactory factory);
+    void add_texture_layout(const std::string& name, int chapter, const std::string& summary,
+                            TextureLayoutFactory factory);
+    // A command-line option of a chapter's capability (options.hpp). Its flag must be new.
+    void add_option(OptionDeclaration option);
+
+    // The accelerator and texture layout used when neither the scene nor the command line names
+    // one: bruteforce and the first registered layout, until a chapter says otherwise (chapter 06
+    // makes its KD-tree the default). The name must be registered.
+    void set_default_accelerator(const std::string& name);
+    void set_default_texture_layout(const std::string& name);
+    const std::string& default_accelerator() const { return default_accelerator_; }
+    const std::string& default_texture_layout() const { return default_texture_layout_; }
 
     // Creators. An unknown name is an InputError at `where` that names the chapter introducing
     // it, or the nearest registered name when no chapter does.
+    // `options` may be null: the integrator's defaults.
     std::unique_ptr<Integrator> make_integrator(const std::string& name, const RenderSettings& settings,
-                                                const std::string& where) const;
+                                                const std::string& where, const Parameters* options = nullptr) const;
+    // Without a context, textures are stored in the default layout.
     std::unique_ptr<Material> make_material(const std::string& type, const Parameters& parameters) const;
-    std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const std::string& where) const;
+    std::unique_ptr<Material> make_material(const std::string& type, const Parameters& parameters,
+                                            const MaterialContext& context) const;
+    std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const std::string& where,
+                                                  const Parameters* options = nullptr) const;
+    std::shared_ptr<const TextureStorage> make_texture_storage(const std::string& layout, const Image& image,
+                                                               const std::string& where) const;
     std::unique_ptr<Light> make_light(const std::string& type, const Parameters& parameters) const;
     // Null when no chapter registered area lights.
     std::unique_ptr<Light> make_area_light(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission) const;
 
     bool has(CapabilityKind kind, const std::string& name) const;
+
+    // The course's catalogue (every capability of every chapter, including chapters this renderer
+    // was built without), for "introduced in chapter N" messages; chapter 01 sets it. The
+    // catalogue must outlive the registry.
+    void set_catalogue(const std::vector<CatalogueEntry>& catalogue);
+    int chapter_introducing(CapabilityKind kind, const std::string& name) const;  // 0 when unknown
+    // Throws the InputError of an unknown name at `where` (naming the chapter that introduces
+    // it) unless the registry has it.
+    void require(CapabilityKind kind, const std::string& name, const std::string& where) const;
 
     struct Entry {
         std::string name;
@@ -70,6 +122,8 @@ public:
     };
     // Everything of a kind, in name order, for `--help` and `info`.
     std::vector<Entry> list(CapabilityKind kind) const;
+    // Every declared option, in the order the chapters added them.
+    const std::vector<OptionDeclaration>& options() const { return options_; }
 
 private:
     [[noreturn]] void unknown(CapabilityKind kind, const std::string& name, const std::string& where) const;
@@ -81,11 +135,12 @@ private:
     std::map<std::string, std::pair<Entry, AcceleratorFactory>> accelerators_;
     std::map<std::string, std::pair<Entry, LightFactory>> lights_;
     std::optional<std::pair<Entry, AreaLightFactory>> area_light_;
+    std::map<std::string, std::pair<Entry, TextureLayoutFactory>> texture_layouts_;
+    std::vector<OptionDeclaration> options_;
+    std::string default_accelerator_ = "bruteforce";
+    std::string default_texture_layout_;
+    const std::vector<CatalogueEntry>* catalogue_ = nullptr;
 };
-
-// The course's catalogue: which chapter introduces each named capability, including those of
-// chapters this renderer was built without. Used only for error messages.
-int chapter_introducing(CapabilityKind kind, const std::string& name);  // 0 when unknown
 
 // The name among `candidates` closest to `name` by edit distance (for "did you mean").
 std::string nearest_name(const std::string& name, const std::vector<std::string>& candidates);

@@ -7,7 +7,10 @@
 #include "freezeray/light.hpp"
 #include "freezeray/material.hpp"
 #include "freezeray/mesh.hpp"
+#include "freezeray/options.hpp"
 #include "freezeray/scene_effects.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -25,6 +28,9 @@ struct RenderDefaults {
     std::uint64_t samples_per_pixel = 16;
     int max_depth = 0;               // 0: the integrator's default
     std::uint64_t seed = 0;
+    // The block's keys that registered integrator options read: the integrator's factory reads
+    // and checks them (integrator_options below).
+    nlohmann::json integrator_options = nlohmann::json::object();
 };
 
 // One emissive triangle (an area light made of triangles).
@@ -46,6 +52,8 @@ public:
     CameraDescription camera_description;
     std::optional<PinholeCamera> camera;
     std::unique_ptr<Accelerator> accelerator;
+    std::string accelerator_name;               // the registered accelerator it was built with
+    std::string texture_layout;                 // the layout its image textures are stored in (may be empty)
     SceneEffects effects;
     Bounds3 bounds;
     RenderDefaults defaults;
@@ -77,7 +85,12 @@ public:
 };
 
 struct SceneLoadOptions {
-    std::string accelerator = "bruteforce";
+    // The accelerator (`--accel`); empty: the scene's "accelerator" block, else the registry's
+    // default.
+    std::string accelerator;
+    // Registered options given on the command line; those of accelerators and texture layouts
+    // are used here, over the scene's "accelerator" and "textures" blocks.
+    OptionValues options;
     // Overrides of the scene's camera resolution (0: keep).
     int width = 0;
     int height = 0;
@@ -90,5 +103,10 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
 
 // Computes the set of effects from the materials and emitters (called by load_scene).
 SceneEffects compute_scene_effects(const Scene& scene);
+
+// The parameters of the scene's integrator: its "render" block's integrator options with the
+// command-line values in `given` over them.
+std::unique_ptr<OptionParameters> integrator_options(const Scene& scene, const OptionValues& given,
+                                                    const Registry& registry);
 
 }  // namespace freezeray

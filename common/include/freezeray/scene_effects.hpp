@@ -6,6 +6,14 @@
 
 namespace freezeray {
 
+class Registry;
+
+// An integrator suited to a scene: its registered name (empty when none fits) and why.
+struct IntegratorSuggestion {
+    std::string name;
+    std::string reason;
+};
+
 struct SceneEffects {
     bool area_emitters = false;     // emissive triangles
     bool delta_lights = false;      // point, spot, directional lights (chapter 03)
@@ -19,8 +27,8 @@ struct SceneEffects {
     // A human-readable list, one effect per line, for `info`.
     std::string describe() const;
 
-    // The name of the best-suited integrator among those registered up to `chapter`, and why.
-    std::string suggested_integrator(int chapter) const;
+    // The best-suited integrator among those `registry` has.
+    IntegratorSuggestion suggest_integrator(const Registry& registry) const;
 };
 
 }  // namespace freezeray

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "freezeray/bsdf.hpp"
-#include "freezeray/lambertian.hpp"
+#include "freezeray/ch01/lambertian.hpp"
 
 namespace freezeray::ch02 {
 
@@ -31,7 +31,7 @@ public:
     const Spectrum& albedo() const { return lambertian_.albedo(); }
 
 private:
-    LambertianBSDF lambertian_;
+    ch01::LambertianBSDF lambertian_;
 };
 
 }  // namespace freezeray::ch02

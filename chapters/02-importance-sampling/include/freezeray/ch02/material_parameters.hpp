@@ -6,6 +6,7 @@
 #include "freezeray/ch02/microfacet.hpp"
 #include "freezeray/ch02/texture.hpp"
 #include "freezeray/parameters.hpp"
+#include "freezeray/registry.hpp"
 
 #include <cstdint>
 #include <string>
@@ -14,15 +15,16 @@ namespace freezeray::ch02 {
 
 // A colour parameter: "key": a number or [r, g, b], or "key_texture": an image file, either
 // its name or {"file": name, "wrap": "repeat" | "clamp" | "mirror", "encoding": "srgb" |
-// "linear"} (defaults: repeat, srgb; "encoding" as in pbrt-v4's image textures). A texture
+// "linear", "layout": a texture layout} (defaults: repeat, srgb, the scene's layout; "encoding"
+// as in pbrt-v4's image textures). A texture
 // replaces the constant (as Blender's OBJ importer treats Kd and map_Kd). Every channel of the
 // constant and of every texel must lie in [min, max].
-SpectrumTexture read_spectrum_texture(const Parameters& p, const std::string& key, const Spectrum& fallback,
+SpectrumTexture read_spectrum_texture(const Parameters& p, const MaterialContext& context, const std::string& key, const Spectrum& fallback,
                                       float min, float max);
 
 // A number parameter, the same way: "key" or "key_texture", whose encoding defaults to linear
 // (data, not colour) and whose first channel is used.
-FloatTexture read_float_texture(const Parameters& p, const std::string& key, float fallback, float min, float max);
+FloatTexture read_float_texture(const Parameters& p, const MaterialContext& context, const std::string& key, float fallback, float min, float max);
 
 // "ior": the index of refraction of the inside relative to the outside, in (0, 10].
 float read_index_of_refraction(const Parameters& p, float fallback);
@@ -60,7 +62,7 @@ inline constexpr float DefaultRoughness = 0.3f;
 MicrofacetRoughness smooth_roughness();
 
 // Reads "roughness" (default `fallback`), "anisotropy", or "roughness_u" and "roughness_v".
-MicrofacetRoughness read_microfacet_roughness(const Parameters& p, float fallback);
+MicrofacetRoughness read_microfacet_roughness(const Parameters& p, const MaterialContext& context, float fallback);
 
 // Throws InputError if the object has keys that nothing read (nested objects, such as a
 // texture's or a mix's parts, have no other way to report a misspelt key).

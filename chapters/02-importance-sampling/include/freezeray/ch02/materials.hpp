@@ -133,16 +133,16 @@ private:
 
 // Factories: each reads its JSON parameters and throws InputError naming the JSON path of a
 // wrong one. `rough` selects the rough variant, which also reads the roughness.
-std::unique_ptr<Material> make_diffuse_material(const Parameters& p);
-std::unique_ptr<Material> make_mirror_material(const Parameters& p);
-std::unique_ptr<Material> make_conductor_material(const Parameters& p, bool rough);
-std::unique_ptr<Material> make_dielectric_material(const Parameters& p, bool rough);
-std::unique_ptr<Material> make_plastic_material(const Parameters& p, bool rough);
+std::unique_ptr<Material> make_diffuse_material(const Parameters& p, const MaterialContext& context);
+std::unique_ptr<Material> make_mirror_material(const Parameters& p, const MaterialContext& context);
+std::unique_ptr<Material> make_conductor_material(const Parameters& p, const MaterialContext& context, bool rough);
+std::unique_ptr<Material> make_dielectric_material(const Parameters& p, const MaterialContext& context, bool rough);
+std::unique_ptr<Material> make_plastic_material(const Parameters& p, const MaterialContext& context, bool rough);
 
 // Builds a material from its JSON description (one part of a mix).
-using MaterialBuilder = std::function<std::unique_ptr<Material>(const Parameters&)>;
+using MaterialBuilder = std::function<std::unique_ptr<Material>(const Parameters&, const MaterialContext&)>;
 
 // A mix of the materials described inline by "first" and "second", built by `build_part`.
-std::unique_ptr<Material> make_mix_material(const Parameters& p, const MaterialBuilder& build_part);
+std::unique_ptr<Material> make_mix_material(const Parameters& p, const MaterialContext& context, const MaterialBuilder& build_part);
 
 }  // namespace freezeray::ch02

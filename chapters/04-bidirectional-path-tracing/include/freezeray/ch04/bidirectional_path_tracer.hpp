@@ -5,11 +5,15 @@
 #pragma once
 
 #include "freezeray/integrator.hpp"
-#include "freezeray/sample_stream.hpp"
+#include "freezeray/parameters.hpp"
+#include "freezeray/ch04/camera_importance.hpp"
+#include "freezeray/ch04/light_path_loop.hpp"
+#include "freezeray/ch04/sample_stream.hpp"
 #include "freezeray/ch03/mis.hpp"
 #include "freezeray/ch04/path_vertex.hpp"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace freezeray::ch04 {
@@ -33,7 +37,15 @@ StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampl
 struct BidirectionalSettings {
     int max_depth = 0;  // segments of a whole path; 0: chapter 02's default
     ch03::MisHeuristic heuristic = ch03::MisHeuristic::Power;
+    // Where to write each strategy's image (`--bdpt-strategies`, strategy_images.hpp); empty:
+    // none are made.
+    std::string strategy_images_folder;
 };
+
+// The settings above from a bdpt integrator's parameters (the scene's "render" block and the
+// option register_chapter04 declares: bdpt_strategies, a folder, checked to take files).
+BidirectionalSettings read_bidirectional_settings(const Parameters& options, int max_depth,
+                                                  ch03::MisHeuristic heuristic);
 
 // One contribution of a bidirectional sample: where it lands on the film and how much.
 struct BidirectionalContribution {
@@ -64,7 +76,6 @@ public:
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
     bool samples_lights() const override { return true; }
     bool resumable() const override { return false; }
-    bool has_strategy_images() const override { return true; }
 
 private:
     BidirectionalSettings settings_;

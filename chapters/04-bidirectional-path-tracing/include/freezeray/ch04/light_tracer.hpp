@@ -7,6 +7,8 @@
 #include "freezeray/bsdf.hpp"
 #include "freezeray/hit.hpp"
 #include "freezeray/integrator.hpp"
+#include "freezeray/ch04/camera_importance.hpp"
+#include "freezeray/ch04/light_path_loop.hpp"
 #include "freezeray/scene.hpp"
 #include "freezeray/ch03/light_sampler.hpp"
 

@@ -45,4 +45,9 @@ private:
     int strategies_;
 };
 
+// Checks, before a render, that `folder` (given by the option at `where`) can take the strategy
+// images: it is a folder, or does not exist yet and the nearest existing folder above it takes
+// files. The folder itself is made after the render, so a failed render leaves nothing behind.
+void check_strategy_images_folder(const std::string& folder, const std::string& where);
+
 }  // namespace freezeray::ch04

@@ -2,7 +2,7 @@
 // section 16.3.2): random walks that record every vertex with its forward and reverse densities.
 #pragma once
 
-#include "freezeray/sample_stream.hpp"
+#include "freezeray/ch04/sample_stream.hpp"
 #include "freezeray/scratch_arena.hpp"
 #include "freezeray/ch04/path_vertex.hpp"
 

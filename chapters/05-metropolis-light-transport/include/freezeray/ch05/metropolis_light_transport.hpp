@@ -5,6 +5,7 @@
 #pragma once
 
 #include "freezeray/integrator.hpp"
+#include "freezeray/parameters.hpp"
 #include "freezeray/ch04/bidirectional_path_tracer.hpp"
 #include "freezeray/ch05/primary_samples.hpp"
 
@@ -23,6 +24,11 @@ struct MltSettings {
     // and one strategy (s, t), chosen by the chain, instead of a whole bidirectional sample.
     bool multiplexed = false;
 };
+
+// The settings above from an mlt integrator's parameters (the scene's "render" block and the
+// options register_chapter05 declares: mlt_large_step, mlt_sigma, mlt_bootstrap, mlt_chains),
+// each checked; keys left out keep the defaults written above.
+MltSettings read_mlt_settings(const Parameters& options, int max_depth, bool multiplexed);
 
 // One bidirectional sample's contributions and its scalar value, the target function of the
 // chain: I(u) = the sum of the luminances of the sample's MIS-weighted contributions.

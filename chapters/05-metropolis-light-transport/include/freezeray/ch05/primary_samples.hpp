@@ -5,7 +5,7 @@
 #pragma once
 
 #include "freezeray/random.hpp"
-#include "freezeray/sample_stream.hpp"
+#include "freezeray/ch04/sample_stream.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -22,7 +22,7 @@ struct PrimarySample {
 };
 // END BOOK
 
-class PrimarySamples final : public SampleStream {
+class PrimarySamples final : public ch04::SampleStream {
 public:
     // `random` drives every mutation; sigma is the small steps' standard deviation; stream_count
     // the number of streams the sample reads (interleaved, so that they never shift each other).

@@ -4,7 +4,7 @@
 #include "freezeray/bsdf.hpp"
 #include "freezeray/material.hpp"
 
-namespace freezeray {
+namespace freezeray::ch01 {
 
 // f = albedo / pi on the side of the shading normal; reflection only.
 class LambertianBSDF final : public BSDF {
@@ -35,4 +35,4 @@ private:
     Spectrum albedo_;
 };
 
-}  // namespace freezeray
+}  // namespace freezeray::ch01

@@ -5,12 +5,12 @@
 #pragma once
 
 #include "freezeray/integrator.hpp"
-#include "freezeray/splat_film.hpp"
+#include "freezeray/ch04/splat_film.hpp"
 
 #include <chrono>
 #include <cstdint>
 
-namespace freezeray {
+namespace freezeray::ch04 {
 
 class SplatBatches {
 public:
@@ -41,4 +41,4 @@ private:
     std::chrono::steady_clock::time_point start_;
 };
 
-}  // namespace freezeray
+}  // namespace freezeray::ch04

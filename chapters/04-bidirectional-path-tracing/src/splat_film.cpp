@@ -1,12 +1,12 @@
 // The splatting film: ordered splat buffers and half-buffer error estimates.
-#include "freezeray/splat_film.hpp"
+#include "freezeray/ch04/splat_film.hpp"
 
 #include "freezeray/metrics.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace freezeray {
+namespace freezeray::ch04 {
 
 void SplatBuffer::add_splat(const Vec2& raster_position, const Spectrum& value, int layer) {
     const float x = std::floor(raster_position.x), y = std::floor(raster_position.y);
@@ -107,4 +107,4 @@ Film SplatFilm::to_film(std::uint64_t samples_per_pixel) const {
     return Film::from_images(mean(), variance_of_mean(), samples_per_pixel);
 }
 
-}  // namespace freezeray
+}  // namespace freezeray::ch04

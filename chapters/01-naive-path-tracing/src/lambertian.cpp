@@ -1,9 +1,9 @@
 // The Lambertian BSDF and the diffuse material.
-#include "freezeray/lambertian.hpp"
+#include "freezeray/ch01/lambertian.hpp"
 
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
-namespace freezeray {
+namespace freezeray::ch01 {
 
 // BOOK(lambertian-eval)
 // A Lambertian surface scatters equally in all directions: f is constant, and energy
@@ -37,4 +37,4 @@ const BSDF* DiffuseMaterial::bsdf(const Hit& /*hit*/, ScratchArena& arena) const
     return arena.make<LambertianBSDF>(albedo_);
 }
 
-}  // namespace freezeray
+}  // namespace freezeray::ch01

@@ -1,9 +1,9 @@
-// Texture storage: the size and range every layout keeps, and the row-major layout.
-#include "freezeray/ch02/texture_storage.hpp"
+// Texture storage: the size and range every layout keeps.
+#include "freezeray/texture_storage.hpp"
 
 #include <stdexcept>
 
-namespace freezeray::ch02 {
+namespace freezeray {
 
 TextureStorage::TextureStorage(const Image& image)
     : width_(image.width()), height_(image.height()), minimum_(0.0f), maximum_(0.0f) {
@@ -16,6 +16,4 @@ TextureStorage::TextureStorage(const Image& image)
     }
 }
 
-LinearTextureStorage::LinearTextureStorage(const Image& image) : TextureStorage(image), texels_(image.pixels()) {}
-
-}  // namespace freezeray::ch02
+}  // namespace freezeray

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace freezeray {
+namespace freezeray::ch04 {
 
 // BOOK(splat-buffer)
 // The splats of one work unit (a run of consecutive light paths), in the order they were made.
@@ -112,4 +112,4 @@ private:
 };
 // END BOOK
 
-}  // namespace freezeray
+}  // namespace freezeray::ch04

@@ -1,11 +1,11 @@
 // Between the batches of a splatting render (see splat_batches.hpp).
-#include "freezeray/splat_batches.hpp"
+#include "freezeray/ch04/splat_batches.hpp"
 
 #include "freezeray/progress.hpp"
 
 #include <cstdint>
 
-namespace freezeray {
+namespace freezeray::ch04 {
 
 namespace {
 
@@ -69,4 +69,4 @@ void SplatBatches::finish(const SplatFilm& film, RenderResult& result) {
     result.film = std::make_shared<const Film>(film.to_film(done_));
 }
 
-}  // namespace freezeray
+}  // namespace freezeray::ch04

@@ -1,18 +1,18 @@
 // The image loop of splatting integrators: batches of light paths, each batch's splats added to
 // the film in a fixed order (see SplatBuffer), so images do not depend on the thread count.
-#include "freezeray/integrator.hpp"
+#include "freezeray/ch04/light_path_loop.hpp"
 
 #include "freezeray/error.hpp"
 #include "freezeray/parallel.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/scene.hpp"
-#include "freezeray/splat_batches.hpp"
+#include "freezeray/ch04/splat_batches.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <vector>
 
-namespace freezeray {
+namespace freezeray::ch04 {
 
 namespace {
 
@@ -84,4 +84,4 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
 }
 // END BOOK
 
-}  // namespace freezeray
+}  // namespace freezeray::ch04

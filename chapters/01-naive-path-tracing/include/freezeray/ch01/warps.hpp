@@ -4,7 +4,7 @@
 
 #include "freezeray/math.hpp"
 
-namespace freezeray {
+namespace freezeray::ch01 {
 
 // Uniform direction on the hemisphere around +z; density 1 / (2 pi) per steradian.
 Vec3 sample_uniform_hemisphere(const Vec2& u);
@@ -18,4 +18,4 @@ float uniform_sphere_pdf();
 // Density 1 / area. (Heitz, "A Low-Distortion Map Between Triangle and Square", 2019.)
 Vec2 sample_uniform_triangle(const Vec2& u);
 
-}  // namespace freezeray
+}  // namespace freezeray::ch01

@@ -1,12 +1,12 @@
 // Sampling warps and their densities (Pharr, Jakob and Humphreys, PBR 3rd ed., section 13.6).
-#include "freezeray/warps.hpp"
+#include "freezeray/ch01/warps.hpp"
 
 #include "freezeray/error.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace freezeray {
+namespace freezeray::ch01 {
 
 // BOOK(sample-uniform-hemisphere)
 // Inverting the CDF of the uniform density 1/(2 pi) over the hemisphere gives cos(theta) = u.x,
@@ -47,4 +47,4 @@ Vec2 sample_uniform_triangle(const Vec2& u) {
     return Vec2(b0, b1);
 }
 
-}  // namespace freezeray
+}  // namespace freezeray::ch01

@@ -6,7 +6,7 @@
 
 #include "freezeray/random.hpp"
 
-namespace freezeray {
+namespace freezeray::ch04 {
 
 class SampleStream {
 public:
@@ -31,4 +31,4 @@ private:
     PCG32& random_;
 };
 
-}  // namespace freezeray
+}  // namespace freezeray::ch04

@@ -1,0 +1,47 @@
+// The interface of a texture's texels, whatever their layout in memory. Chapter 02 stores rows
+// one after another ("linear"); chapter 08 adds tiles that keep neighbouring texels in one cache
+// line. A layout is a registered capability (Registry::add_texture_layout), like an accelerator.
+#pragma once
+
+#include "freezeray/image.hpp"
+#include "freezeray/math.hpp"
+
+namespace freezeray {
+
+// What happens to texture coordinates outside [0, 1]: the image repeats, its edge texels
+// stretch out, or it repeats mirrored so that neighbouring copies meet without a seam.
+enum class WrapMode { Repeat, Clamp, Mirror };
+
+// The texels of one image: width x height linear RGB values, (0, 0) at the top-left.
+class TextureStorage {
+public:
+    virtual ~TextureStorage() = default;
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    // The filtered value at texture coordinates uv: one virtual call per lookup, inside which a
+    // layout reads its texels without further dispatch (chapter 02's bilinear_lookup<Layout>).
+    virtual Spectrum lookup(const Vec2& uv, WrapMode wrap) const = 0;
+
+    // The texel in column x, row y; requires 0 <= x < width and 0 <= y < height. For tests
+    // and tools; lookups call the layout's own (inline) texel.
+    virtual Spectrum texel(int x, int y) const = 0;
+
+    // The smallest and the largest texel value, per channel. Bilinear filtering mixes texels
+    // with weights that sum to one, so no lookup leaves this range.
+    const Spectrum& minimum() const { return minimum_; }
+    const Spectrum& maximum() const { return maximum_; }
+
+protected:
+    // Every layout is made from a decoded image (at least 1 x 1) and keeps its size and range.
+    explicit TextureStorage(const Image& image);
+
+private:
+    int width_;
+    int height_;
+    Spectrum minimum_;
+    Spectrum maximum_;
+};
+
+}  // namespace freezeray
