@@ -49,6 +49,10 @@ int run_info(const std::string& scene_path, const Registry& registry) {
               << scene.lights.size() - area_lights << " from the \"lights\" array";
     if (scene.environment != nullptr) std::cout << ", one of them the environment";
     std::cout << ")\n";
+    if (const auto lines = scene.accelerator->describe(); !lines.empty()) {
+        std::cout << "accelerator:\n";
+        for (const auto& [name, value] : lines) std::cout << "  " << name << ": " << value << "\n";
+    }
     std::cout << "effects:\n" << scene.effects.describe();
     // The best suited integrator this renderer has (a chapter in progress may not have its own yet).
     std::string suggestion = scene.effects.suggested_integrator(registry.chapter());
