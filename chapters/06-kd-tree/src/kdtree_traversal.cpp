@@ -16,18 +16,6 @@
 
 namespace freezeray::ch06 {
 
-ChildOrder order_children(const KdTreeNode& node, std::uint32_t index, const Ray& ray, const Vec3& inverse_direction) {
-    // EXERCISE(ch06/near-far-order): return the child the ray passes through first (below when the direction grows along the split axis; for a ray parallel to the plane, the side of its origin, below when on the plane), the other second, and the ray's distance to the plane
-    const int axis = node.split_axis();
-    const float split = node.split_position();
-    const float t_plane = (split - ray.origin[axis]) * inverse_direction[axis];
-    const float d = ray.direction[axis];
-    const bool below_first = d > 0.0f || (d == 0.0f && ray.origin[axis] <= split);
-    const std::uint32_t below = index + 1, above = node.above_child();
-    return below_first ? ChildOrder{below, above, t_plane} : ChildOrder{above, below, t_plane};
-    // END EXERCISE
-}
-
 namespace {
 
 // The watertight test decides in floating point whether a ray passes inside a triangle, from the
@@ -120,15 +108,23 @@ struct TraversalTask {
 template <typename VisitLeaf>
 void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction, const Beam& beam, float t_min,
               float t_max, VisitLeaf&& visit_leaf) {
+    // Per axis: whether the ray is parallel to planes across it, and how long the beam takes
+    // to cross one.
+    bool parallel[3];
+    float crossing[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        parallel[axis] = std::isinf(inverse_direction[axis]);
+        crossing[axis] = beam.radius * std::abs(inverse_direction[axis]);
+    }
     TraversalTask stack[TraversalStackSize];  // the build keeps the depth within it
     int top = 0;
     std::uint32_t index = 0;
-    float wanted = ray.tmax;
+    float skip_after = std::numeric_limits<float>::infinity();
     for (;;) {
         // A cell that begins beyond what is wanted is skipped. The cells still on the stack
         // usually begin later still, but not always (the beam's ranges overlap, and a ray
         // parallel to a plane gives both children one range): they are checked, not dropped.
-        if (t_min > wanted * (1.0f + DistanceMargin) + beam.t_slack) {
+        if (t_min > skip_after) {
             if (top == 0) break;
             --top;
             index = stack[top].node;
@@ -140,7 +136,7 @@ void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction,
         if (!node.is_leaf()) {
             const ChildOrder order = order_children(node, index, ray, inverse_direction);
             const int axis = node.split_axis();
-            if (std::isinf(inverse_direction[axis])) {
+            if (parallel[axis]) {
                 // Parallel to the plane: the origin's side all along, the other too if the beam
                 // reaches across (a ray lying in the plane gives t_plane NaN: 0 times infinity).
                 if (std::abs(ray.origin[axis] - node.split_position()) <= beam.radius)
@@ -150,7 +146,7 @@ void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction,
             }
             // The beam touches the first child until it is past the plane by its radius, the
             // second from when it is that close to the plane.
-            const float dt = beam.radius * std::abs(inverse_direction[axis]);
+            const float dt = crossing[axis];
             const float first_until = order.t_plane + dt, second_from = order.t_plane - dt;
             const bool first = first_until >= t_min, second = second_from <= t_max;
             if (first && second) {
@@ -165,7 +161,8 @@ void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction,
             }
             continue;
         }
-        wanted = visit_leaf(node);
+        const float wanted = visit_leaf(node);
+        skip_after = wanted * (1.0f + DistanceMargin) + beam.t_slack;
         if (top == 0) break;
         --top;
         index = stack[top].node;
