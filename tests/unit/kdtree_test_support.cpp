@@ -211,13 +211,13 @@ Conformance compare_with_brute_force(const std::string& accelerator, const std::
         if (!same_hit(expected, found))
             report("intersect, ray " + std::to_string(i) + ": " + describe_ray(ray) + ": bruteforce " +
                    describe_hit(expected) + ", " + accelerator + " " + describe_hit(found));
-        // Shadow rays ending before, exactly at, just past and well past the closest hit. (Not
-        // one ulp past it: there bruteforce's own answer depends on rounding, as its box test
-        // may cull the mesh whose triangle it hit with a longer ray.)
+        // Shadow rays ending before, exactly at, one ulp past and well past the closest hit.
+        // Exactly at it and one ulp past it, intersect is compared too: there bruteforce's box
+        // test may cull the mesh of the hit it found with a longer ray.
         Ray shadow = ray;
         const float u = random.next_float();
         if (expected && i % 8 == 0) shadow.tmax = expected->t;
-        else if (expected && i % 8 == 1) shadow.tmax = expected->t * (1.0f + 0x1p-12f);
+        else if (expected && i % 8 == 1) shadow.tmax = std::nextafter(expected->t, INFINITY);
         else if (expected) shadow.tmax = 2.0f * u * expected->t;
         else shadow.tmax = std::min(ray.tmax, 2.0f * u * scene_size);
         if (!(shadow.tmax > 0.0f)) shadow.tmax = ray.tmax;
@@ -225,6 +225,13 @@ Conformance compare_with_brute_force(const std::string& accelerator, const std::
         if (blocked != tested->occluded(shadow))
             report("occluded, ray " + std::to_string(i) + ": " + describe_ray(shadow) + ": bruteforce " +
                    (blocked ? "true" : "false") + ", " + accelerator + " " + (blocked ? "false" : "true"));
+        if (expected && i % 8 < 2) {
+            const auto shortened_expected = brute_force->intersect(shadow);
+            const auto shortened_found = tested->intersect(shadow);
+            if (!same_hit(shortened_expected, shortened_found))
+                report("intersect, ray " + std::to_string(i) + ": " + describe_ray(shadow) + ": bruteforce " +
+                       describe_hit(shortened_expected) + ", " + accelerator + " " + describe_hit(shortened_found));
+        }
     }
     return result;
 }
