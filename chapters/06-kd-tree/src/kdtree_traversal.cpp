@@ -1,8 +1,9 @@
 // Front-to-back traversal of the KD-tree (pbrt-v3, section 4.4.3; Havran, "Heuristic Ray
-// Shooting Algorithms", PhD thesis, 2000): the ray's parametric range is cut at each split plane,
-// the near child is visited first, the far one is kept on a fixed stack, and the walk ends once
-// the closest hit lies before the next cell. Hits are those of brute force: the same watertight triangle test (Woop, Benthin and Wald
-// 2013) on the same floats, and at equal t the lowest (mesh, triangle) index.
+// Shooting Algorithms", PhD thesis, 2000): the ray's range is cut at each split plane, the child
+// it passes first is visited first, the other is kept on a fixed stack, and the walk ends once
+// the next cell begins beyond the closest hit. Hits are those of brute force: the same
+// watertight triangle test (Woop, Benthin and Wald 2013) on the same floats, cells found by a
+// beam as wide as that test's rounding, and among hits an ulp apart brute force's own choice.
 #include "freezeray/ch06/close_hits.hpp"
 #include "freezeray/ch06/kdtree_accelerator.hpp"
 #include "freezeray/ch06/kdtree_traversal.hpp"
@@ -25,9 +26,10 @@ namespace {
 // triangle is blurred by about 0.01. Brute force takes those answers as they come; to find the
 // same triangles the traversal follows a beam around the ray and visits every cell the beam
 // touches, of radius 2^-18 (64 roundings) times the distance from the origin to the farthest
-// corner of the scene's bounds, which bounds every |vertex - origin| that matters. The same beam
-// covers the rounding of the distances to the split planes: a ray through the corner where two
-// planes meet, or through a shared vertex or edge lying in a plane, visits every cell there.
+// corner of the scene's bounds, which bounds every |vertex - origin| wherever the origin is. The
+// beam also covers the rounding of the distances to the split planes: a ray through the corner
+// where two planes meet, or through a shared vertex or edge lying in a plane, visits every cell
+// there.
 constexpr float BeamRadiusScale = 0x1p-18f;
 
 // A triangle's t is rounded too (its distance from the shear, then a division): a cell is still
