@@ -7,6 +7,7 @@
 #include "freezeray/ch03/register_chapter03.hpp"
 #include "freezeray/ch04/register_chapter04.hpp"
 #include "freezeray/ch05/register_chapter05.hpp"
+#include "freezeray/ch06/register_chapter06.hpp"
 
 namespace freezeray {
 
@@ -14,7 +15,7 @@ namespace {
 
 // Every chapter's register function, in the order of the course.
 void (*const chapters[])(Registry&) = {
-    register_chapter01, register_chapter02, register_chapter03, register_chapter04, register_chapter05,
+    register_chapter01, register_chapter02, register_chapter03, register_chapter04, register_chapter05, register_chapter06,
 };
 
 }  // namespace

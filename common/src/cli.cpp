@@ -50,13 +50,14 @@ int run_info(const std::string& scene_path, const Registry& registry) {
               << scene.lights.size() - area_lights << " from the \"lights\" array";
     if (scene.environment != nullptr) std::cout << ", one of them the environment";
     std::cout << ")\n";
+    std::cout << "accelerator: " << scene.accelerator_name << "\n";
+    for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
     std::cout << "effects:\n" << scene.effects.describe();
     // The best suited integrator this renderer has.
     const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry);
     std::cout << "suggested:  " << (suggestion.name.empty() ? "none: " + suggestion.reason
                                                              : suggestion.name + " (" + suggestion.reason + ")")
               << "\n";
-    std::cout << "accelerator: " << scene.accelerator_name << "\n";
     if (!scene.texture_layout.empty()) std::cout << "textures:   stored in the " << scene.texture_layout << " layout\n";
     return 0;
 }

@@ -111,6 +111,12 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     load.height = options.height;
     Scene scene = load_scene(options.scene, registry, load);
     for (const std::string& w : scene.warnings) std::cerr << "warning: " << w << "\n";
+    if (!options.quiet) {
+        std::string accelerator;  // one line: "accelerator: build 12.3 ms, ...; nodes ..."
+        for (const auto& [name, value] : scene.accelerator->describe())
+            accelerator += (accelerator.empty() ? "" : "; ") + name + " " + value;
+        std::cerr << "accelerator: " << scene.accelerator_name << (accelerator.empty() ? "" : ": " + accelerator) << "\n";
+    }
 
     RenderSettings settings;
     settings.samples_per_pixel = options.spp_given ? static_cast<std::uint64_t>(options.spp) : scene.defaults.samples_per_pixel;

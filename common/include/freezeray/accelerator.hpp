@@ -7,6 +7,8 @@
 #include "freezeray/ray.hpp"
 
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace freezeray {
@@ -23,6 +25,10 @@ public:
 
     // True if anything lies on the ray with t in (0, ray.tmax): the cheaper shadow-ray query.
     virtual bool occluded(const Ray& ray) const = 0;
+
+    // What the accelerator built, as (name, value) lines for `info` and `render` to print
+    // (sizes, build time); none by default.
+    virtual std::vector<std::pair<std::string, std::string>> describe() const { return {}; }
 };
 
 // Fills in a Hit from a triangle, its barycentrics and the ray distance: interpolated position

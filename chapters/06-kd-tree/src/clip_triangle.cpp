@@ -1,0 +1,85 @@
+// Sutherland-Hodgman clipping of a triangle against a box (Sutherland and Hodgman, "Reentrant
+// polygon clipping", CACM 17(1), 1974), as kd-tree builders with perfect splits use it (Havran,
+// "Heuristic Ray Shooting Algorithms", 2000; Wald and Havran 2006, section 4.3).
+#include "freezeray/ch06/clip_triangle.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace freezeray::ch06 {
+
+namespace {
+
+// A convex polygon: a triangle cut by six planes has at most 3 + 6 vertices (each plane removes
+// at least one vertex for the two it adds, or leaves the polygon as it is).
+struct ClipPolygon {
+    std::array<glm::dvec3, 9> vertices;
+    int count = 0;
+    void add(const glm::dvec3& v) { vertices[static_cast<std::size_t>(count++)] = v; }
+};
+
+// The largest float not above x, and the smallest not below: float(x) when x is a float.
+float float_below(double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+}
+
+float float_above(double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+}
+
+// The point where segment a-b crosses the plane coordinate[axis] = value (a and b on opposite
+// sides): exactly on the plane, and never outside the segment's own bounds.
+glm::dvec3 crossing_point(const glm::dvec3& a, const glm::dvec3& b, int axis, double value) {
+    const double s = (value - a[axis]) / (b[axis] - a[axis]);
+    glm::dvec3 p = a + (b - a) * s;
+    for (int k = 0; k < 3; ++k) p[k] = std::clamp(p[k], std::min(a[k], b[k]), std::max(a[k], b[k]));
+    p[axis] = value;
+    return p;
+}
+
+}  // namespace
+
+std::optional<Bounds3> clip_triangle_to_box(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Bounds3& box) {
+    // EXERCISE(ch06/clip-triangle): clip the triangle against the six planes of the box in turn (keeping points on a plane), and return the bounds of what is left, rounded outward to floats and within the box, or nothing when nothing is left
+    ClipPolygon polygon;
+    polygon.add(glm::dvec3(p0));
+    polygon.add(glm::dvec3(p1));
+    polygon.add(glm::dvec3(p2));
+    for (int plane = 0; plane < 6 && polygon.count > 0; ++plane) {
+        const int axis = plane / 2;
+        const bool keep_above = plane % 2 == 0;  // min planes keep what is above them
+        const double value = keep_above ? box.min[axis] : box.max[axis];
+        auto inside = [&](const glm::dvec3& v) { return keep_above ? v[axis] >= value : v[axis] <= value; };
+        ClipPolygon clipped;
+        for (int i = 0; i < polygon.count; ++i) {
+            const glm::dvec3& a = polygon.vertices[static_cast<std::size_t>(i)];
+            const glm::dvec3& b = polygon.vertices[static_cast<std::size_t>((i + 1) % polygon.count)];
+            const bool a_inside = inside(a), b_inside = inside(b);
+            if (a_inside) clipped.add(a);
+            if (a_inside != b_inside) clipped.add(crossing_point(a, b, axis, value));
+        }
+        polygon = clipped;
+    }
+    if (polygon.count == 0) return std::nullopt;
+
+    glm::dvec3 low = polygon.vertices[0], high = polygon.vertices[0];
+    for (int i = 1; i < polygon.count; ++i) {
+        low = glm::min(low, polygon.vertices[static_cast<std::size_t>(i)]);
+        high = glm::max(high, polygon.vertices[static_cast<std::size_t>(i)]);
+    }
+    Bounds3 bounds;
+    for (int k = 0; k < 3; ++k) {
+        bounds.min[k] = std::max(float_below(low[k]), box.min[k]);
+        bounds.max[k] = std::min(float_above(high[k]), box.max[k]);
+    }
+    return bounds;
+    // END EXERCISE
+}
+
+}  // namespace freezeray::ch06

@@ -1,0 +1,46 @@
+// Chapter 06's registrations: the KD-tree, its settings as options, and the KD-tree as the
+// default accelerator from this chapter on.
+#include "freezeray/ch06/register_chapter06.hpp"
+
+#include "freezeray/ch06/kdtree_accelerator.hpp"
+
+#include <string>
+
+namespace freezeray {
+
+void register_chapter06(Registry& registry) {
+    registry.add_accelerator("kdtree", 6,
+                             "SAH KD-tree built in O(N log N) with perfect splits (Wald and Havran 2006), "
+                             "traversed front to back; hits identical to bruteforce",
+                             [](const Parameters& parameters) {
+                                 return std::make_unique<ch06::KdTreeAccelerator>(ch06::read_kdtree_settings(parameters));
+                             });
+    registry.set_default_accelerator("kdtree");
+
+    // The settings of kdtree_settings.hpp, as flags; a scene's "accelerator" block takes the
+    // same keys ({"type": "kdtree", "intersection_cost": 20}).
+    const ch06::KdTreeSettings defaults;
+    auto declare = [&](const char* flag, const char* key, OptionType type, const std::string& help) {
+        registry.add_option({flag, key, type, OptionTarget::Accelerator, help, {"kdtree"}, 6});
+    };
+    auto number = [](float value) {
+        std::string text = std::to_string(value);
+        text.erase(text.find_last_not_of('0') + 1);
+        if (text.back() == '.') text.pop_back();
+        return text;
+    };
+    declare("--kdtree-traversal-cost", "traversal_cost", OptionType::Number,
+            "kdtree: the SAH cost of one traversal step (default " + number(defaults.traversal_cost) + ")");
+    declare("--kdtree-intersection-cost", "intersection_cost", OptionType::Number,
+            "kdtree: the SAH cost of one ray-triangle test (default " + number(defaults.intersection_cost) + ")");
+    declare("--kdtree-empty-bonus", "empty_bonus", OptionType::Number,
+            "kdtree: the share of the cost saved by an empty child, in [0, 1) (default " +
+                number(defaults.empty_bonus) + ")");
+    declare("--kdtree-max-depth", "max_depth", OptionType::Integer,
+            "kdtree: the deepest node (0: 8 + 1.3 log2 N, at most 64; default 0)");
+    declare("--kdtree-leaf-size", "leaf_size", OptionType::Integer,
+            "kdtree: nodes with at most this many triangles become leaves untried (default " +
+                std::to_string(defaults.leaf_size) + ")");
+}
+
+}  // namespace freezeray

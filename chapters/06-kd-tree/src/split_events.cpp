@@ -1,0 +1,117 @@
+// Events per axis, and dividing a node's events between its children in linear time (Wald and
+// Havran 2006, section 4.3).
+#include "freezeray/ch06/split_events.hpp"
+
+#include "freezeray/ch06/clip_triangle.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+namespace freezeray::ch06 {
+
+void add_triangle_events(NodeEvents& events, std::uint32_t triangle, const Bounds3& box) {
+    for (int axis = 0; axis < 3; ++axis) {
+        auto& list = events[static_cast<std::size_t>(axis)];
+        if (box.min[axis] == box.max[axis]) {
+            list.push_back({box.min[axis], triangle, EventType::Planar});
+        } else {
+            list.push_back({box.min[axis], triangle, EventType::Start});
+            list.push_back({box.max[axis], triangle, EventType::End});
+        }
+    }
+}
+
+void sort_events(NodeEvents& events) {
+    for (auto& list : events) std::sort(list.begin(), list.end());
+}
+
+std::vector<std::uint32_t> triangles_of(const NodeEvents& events) {
+    std::vector<std::uint32_t> triangles;
+    for (const SplitEvent& e : events[0])
+        if (e.type != EventType::End) triangles.push_back(e.triangle);
+    std::sort(triangles.begin(), triangles.end());
+    return triangles;
+}
+
+namespace {
+
+// The classification of Wald and Havran 2006, section 4.3: a triangle is below the plane if its box ends at or
+// before it, above if it starts at or after it, both if the plane cuts its box; a triangle lying
+// in the plane goes to the side the cost model chose.
+void classify_triangles(const std::vector<SplitEvent>& axis_events, const SplitPlane& plane, std::vector<Side>& sides) {
+    for (const SplitEvent& e : axis_events) sides[e.triangle] = Side::Both;
+    for (const SplitEvent& e : axis_events) {
+        if (e.type == EventType::End && e.position <= plane.position) {
+            sides[e.triangle] = Side::Below;
+        } else if (e.type == EventType::Start && e.position >= plane.position) {
+            sides[e.triangle] = Side::Above;
+        } else if (e.type == EventType::Planar) {
+            const bool below = e.position < plane.position || (e.position == plane.position && plane.planar_below);
+            sides[e.triangle] = below ? Side::Below : Side::Above;
+        }
+    }
+}
+
+// The cut triangle's box within a child cell. The exact intersection is never empty (the box
+// the plane cuts is that of the triangle's part inside the node, so that part has points on
+// both sides); should rounding make it so, the whole child cell is a box that surely holds it.
+Bounds3 box_within(const TriangleVertices& t, const Bounds3& child_cell) {
+    const auto box = clip_triangle_to_box(t.p0, t.p1, t.p2, child_cell);
+    return box ? *box : child_cell;
+}
+
+}  // namespace
+
+ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, const Bounds3& cell,
+                         const std::vector<TriangleVertices>& triangles, std::vector<Side>& sides) {
+    const auto& axis_events = events[static_cast<std::size_t>(plane.axis)];
+    classify_triangles(axis_events, plane, sides);
+
+    // Triangles on one side keep their events, in order.
+    ChildEvents children;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        for (const SplitEvent& e : events[axis]) {
+            const Side side = sides[e.triangle];
+            if (side == Side::Below) children.below[axis].push_back(e);
+            else if (side == Side::Above) children.above[axis].push_back(e);
+        }
+    }
+    for (const SplitEvent& e : axis_events) {
+        if (e.type == EventType::End) continue;  // count each triangle once
+        const Side side = sides[e.triangle];
+        if (side == Side::Below) ++children.below_count;
+        else if (side == Side::Above) ++children.above_count;
+    }
+
+    // Triangles the plane cuts: clipped to each child's cell, their new events sorted apart.
+    Bounds3 below_cell = cell, above_cell = cell;
+    below_cell.max[plane.axis] = plane.position;
+    above_cell.min[plane.axis] = plane.position;
+    NodeEvents cut_below, cut_above;
+    for (const SplitEvent& e : axis_events) {
+        if (e.type != EventType::Start || sides[e.triangle] != Side::Both) continue;
+        const TriangleVertices& t = triangles[e.triangle];
+        add_triangle_events(cut_below, e.triangle, box_within(t, below_cell));
+        add_triangle_events(cut_above, e.triangle, box_within(t, above_cell));
+        ++children.below_count;
+        ++children.above_count;
+    }
+    sort_events(cut_below);
+    sort_events(cut_above);
+
+    // Merging two sorted lists is linear (section 4.3).
+    auto merge_into = [](std::vector<SplitEvent>& kept, const std::vector<SplitEvent>& cut) {
+        if (cut.empty()) return;
+        std::vector<SplitEvent> merged;
+        merged.reserve(kept.size() + cut.size());
+        std::merge(kept.begin(), kept.end(), cut.begin(), cut.end(), std::back_inserter(merged));
+        kept = std::move(merged);
+    };
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        merge_into(children.below[axis], cut_below[axis]);
+        merge_into(children.above[axis], cut_above[axis]);
+    }
+    return children;
+}
+
+}  // namespace freezeray::ch06

@@ -1,0 +1,245 @@
+// Grading tests of chapter 06's exercises. Each test case is named after its exercise, calls the
+// exercise's own function first (so that in a student copy it fails through its own stub), and
+// checks it against exact values; clip-triangle also against an independent computation of the
+// clipped polygon's vertices, near-far-order also by tracing rays through a tree against brute
+// force. Deterministic: no statistical test in this file.
+#include "freezeray/ch06/clip_triangle.hpp"
+#include "freezeray/ch06/kdtree_accelerator.hpp"
+#include "freezeray/ch06/kdtree_traversal.hpp"
+#include "freezeray/ch06/surface_area_heuristic.hpp"
+#include "freezeray/random.hpp"
+#include "freezeray/ch01/warps.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+using namespace freezeray;
+using namespace freezeray::ch06;
+
+namespace {
+
+Bounds3 box(const Vec3& min, const Vec3& max) {
+    Bounds3 b;
+    b.expand(min);
+    b.expand(max);
+    return b;
+}
+
+// The bounds of triangle ∩ box from the vertices of that convex polygon, found without clipping:
+// the triangle's vertices inside the box, its edges' crossings of the box's planes inside the box,
+// and the box's edges' crossings of the triangle. Double precision, with a tolerance of `eps`.
+std::optional<std::pair<glm::dvec3, glm::dvec3>> reference_clip(const glm::dvec3 v[3], const glm::dvec3& lo,
+                                                                 const glm::dvec3& hi, double eps) {
+    std::vector<glm::dvec3> points;
+    auto in_box = [&](const glm::dvec3& p) {
+        for (int k = 0; k < 3; ++k)
+            if (p[k] < lo[k] - eps || p[k] > hi[k] + eps) return false;
+        return true;
+    };
+    for (int i = 0; i < 3; ++i)
+        if (in_box(v[i])) points.push_back(v[i]);
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec3 &a = v[i], &b = v[(i + 1) % 3];
+        for (int k = 0; k < 3; ++k)
+            for (double c : {lo[k], hi[k]})
+                if ((a[k] - c) * (b[k] - c) < 0.0) {
+                    const glm::dvec3 p = a + (b - a) * ((c - a[k]) / (b[k] - a[k]));
+                    if (in_box(p)) points.push_back(p);
+                }
+    }
+    const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+    for (int k = 0; k < 3; ++k)
+        for (int corner = 0; corner < 4; ++corner) {
+            glm::dvec3 q0 = lo, q1;
+            q0[(k + 1) % 3] = (corner & 1) ? hi[(k + 1) % 3] : lo[(k + 1) % 3];
+            q0[(k + 2) % 3] = (corner & 2) ? hi[(k + 2) % 3] : lo[(k + 2) % 3];
+            q1 = q0;
+            q1[k] = hi[k];
+            const double denominator = glm::dot(n, q1 - q0);
+            if (denominator == 0.0) continue;
+            const double s = glm::dot(n, v[0] - q0) / denominator;
+            if (s < 0.0 || s > 1.0) continue;
+            const glm::dvec3 p = q0 + s * (q1 - q0);
+            // Inside the triangle: the three edge normals agree with n.
+            bool inside = true;
+            for (int i = 0; i < 3; ++i)
+                inside &= glm::dot(glm::cross(v[(i + 1) % 3] - v[i], p - v[i]), n) >= -eps * glm::dot(n, n);
+            if (inside) points.push_back(p);
+        }
+    if (points.empty()) return std::nullopt;
+    glm::dvec3 min = points[0], max = points[0];
+    for (const glm::dvec3& p : points) min = glm::min(min, p), max = glm::max(max, p);
+    return std::make_pair(min, max);
+}
+
+}  // namespace
+
+TEST_CASE("ch06/sah-cost", "[exercise]") {
+    KdTreeSettings s;  // the costs are set here, whatever the defaults are
+    s.traversal_cost = 15.0f;
+    s.intersection_cost = 20.0f;
+    s.empty_bonus = 0.25f;
+    const Bounds3 cube = box(Vec3(0.0f), Vec3(1.0f));  // surface area 6
+    // Halves: each child has area 4 of 6.
+    REQUIRE(split_cost(s, cube, 0, 0.5f, 3, 5) == Approx(15.0 + 20.0 * (4.0 / 6.0 * 3 + 4.0 / 6.0 * 5)).epsilon(1e-12));
+    CHECK(split_cost(s, cube, 1, 0.5f, 3, 5) == Approx(15.0 + 20.0 * (4.0 / 6.0 * 8)).epsilon(1e-12));
+    // At 0.25 along z: areas 2 (0.25 + 0.25 + 1) = 3 and 2 (0.75 + 0.75 + 1) = 5.
+    CHECK(split_cost(s, cube, 2, 0.25f, 4, 2) == Approx(15.0 + 20.0 * (3.0 / 6.0 * 4 + 5.0 / 6.0 * 2)).epsilon(1e-12));
+    // One child empty: the bonus takes a quarter of the intersection cost off.
+    CHECK(split_cost(s, cube, 0, 0.25f, 0, 4) == Approx(15.0 + 0.75 * 20.0 * (5.0 / 6.0 * 4)).epsilon(1e-12));
+    CHECK(split_cost(s, cube, 0, 0.75f, 4, 0) == Approx(15.0 + 0.75 * 20.0 * (5.0 / 6.0 * 4)).epsilon(1e-12));
+    // A plane on the cell's face: the flat child still has the area of its two faces, 2 of 6.
+    CHECK(split_cost(s, cube, 0, 0.0f, 2, 5) == Approx(15.0 + 20.0 * (2.0 / 6.0 * 2 + 1.0 * 5)).epsilon(1e-12));
+    // A flat cell 2 x 1 x 0 (area 4): split at x = 0.5 into areas 1 and 3.
+    const Bounds3 flat = box(Vec3(0.0f), Vec3(2.0f, 1.0f, 0.0f));
+    CHECK(split_cost(s, flat, 0, 0.5f, 2, 2) == Approx(15.0 + 20.0 * (0.25 * 2 + 0.75 * 2)).epsilon(1e-12));
+    // Other costs, and a box far from the origin (areas, not coordinates, matter).
+    s.traversal_cost = 1.0f;
+    s.intersection_cost = 80.0f;
+    s.empty_bonus = 0.5f;
+    const Bounds3 far = box(Vec3(1000.0f, -3000.0f, 50.0f), Vec3(1004.0f, -2998.0f, 51.0f));  // 4 x 2 x 1, area 28
+    // x = 1001: below 1 x 2 x 1 (area 10), above 3 x 2 x 1 (area 22).
+    CHECK(split_cost(s, far, 0, 1001.0f, 7, 9) == Approx(1.0 + 80.0 * (10.0 / 28.0 * 7 + 22.0 / 28.0 * 9)).epsilon(1e-12));
+    CHECK(split_cost(s, far, 0, 1001.0f, 0, 9) == Approx(1.0 + 0.5 * 80.0 * (22.0 / 28.0 * 9)).epsilon(1e-12));
+    // A huge cell: no overflow.
+    const Bounds3 huge = box(Vec3(-1e30f), Vec3(1e30f));
+    CHECK(split_cost(s, huge, 1, 0.0f, 1, 1) == Approx(1.0 + 80.0 * (4.0 / 6.0 * 2)).epsilon(1e-6));
+}
+
+TEST_CASE("ch06/clip-triangle", "[exercise]") {
+    const Bounds3 unit = box(Vec3(0.0f), Vec3(1.0f));
+    // Inside: its own bounds, exactly.
+    const auto inside = clip_triangle_to_box(Vec3(0.1f, 0.2f, 0.3f), Vec3(0.9f, 0.25f, 0.4f), Vec3(0.5f, 0.8f, 0.7f), unit);
+    REQUIRE(inside);
+    CHECK(inside->min == Vec3(0.1f, 0.2f, 0.3f));
+    CHECK(inside->max == Vec3(0.9f, 0.8f, 0.7f));
+    // Outside: nothing.
+    CHECK_FALSE(clip_triangle_to_box(Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(2, 1, 0), unit));
+    CHECK_FALSE(clip_triangle_to_box(Vec3(0.8f, 1.5f, 0.5f), Vec3(1.5f, 0.8f, 0.5f), Vec3(1.5f, 1.5f, 0.5f), unit));
+    // A triangle whose bounding box overlaps the box but which does not: nothing either.
+    CHECK_FALSE(clip_triangle_to_box(Vec3(0.9f, 2, 0.5f), Vec3(2, 0.9f, 0.5f), Vec3(2, 2, 0.5f), unit));
+    // Cut by two planes: the square [0, 1]^2 of the plane z = 0, flat in z exactly.
+    const auto square = clip_triangle_to_box(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(0, 2, 0), box(Vec3(0, 0, -1), Vec3(1, 1, 1)));
+    REQUIRE(square);
+    CHECK(square->min == Vec3(0, 0, 0));
+    CHECK(square->max == Vec3(1, 1, 0));
+    // The hypotenuse x + y = 3 cuts the box [1, 3]^2 to the triangle (1, 1), (2, 1), (1, 2).
+    const auto corner = clip_triangle_to_box(Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(0, 3, 0), box(Vec3(1, 1, -1), Vec3(3, 3, 1)));
+    REQUIRE(corner);
+    CHECK(corner->min == Vec3(1, 1, 0));
+    CHECK(corner->max == Vec3(2, 2, 0));
+    // A tilted triangle in z = x + y, cut by z <= 0.5: x, y and z in [0, 0.5].
+    const auto tilted = clip_triangle_to_box(Vec3(0, 0, 0), Vec3(1, 0, 1), Vec3(0, 1, 1), box(Vec3(0, 0, 0), Vec3(1, 1, 0.5f)));
+    REQUIRE(tilted);
+    CHECK(tilted->min == Vec3(0, 0, 0));
+    CHECK(tilted->max == Vec3(0.5f, 0.5f, 0.5f));
+    // Touching the box at one vertex only: that point (a triangle touching a cell is not lost).
+    const auto touching = clip_triangle_to_box(Vec3(1, 0.5f, 0.5f), Vec3(2, 0.5f, 0.5f), Vec3(2, 1, 0.5f), unit);
+    REQUIRE(touching);
+    CHECK(touching->min == Vec3(1, 0.5f, 0.5f));
+    CHECK(touching->max == Vec3(1, 0.5f, 0.5f));
+
+    // Random triangles and boxes against the polygon's vertices found independently: the result
+    // contains the exact bounds, lies within the box, and is tight to within 1e-6 of the scene.
+    PCG32 random(6, 6);
+    auto point = [&](float scale) { return scale * Vec3(random.next_float(), random.next_float(), random.next_float()); };
+    int checked = 0;
+    for (int i = 0; i < 5000; ++i) {
+        const Vec3 p[3] = {point(4.0f) - Vec3(1.0f), point(4.0f) - Vec3(1.0f), point(4.0f) - Vec3(1.0f)};
+        const Bounds3 cell = box(point(2.0f), point(2.0f));
+        const auto clipped = clip_triangle_to_box(p[0], p[1], p[2], cell);
+        const glm::dvec3 v[3] = {glm::dvec3(p[0]), glm::dvec3(p[1]), glm::dvec3(p[2])};
+        const auto expected = reference_clip(v, glm::dvec3(cell.min), glm::dvec3(cell.max), 1e-12);
+        INFO("triangle " << i);
+        REQUIRE(clipped.has_value() == expected.has_value());
+        if (!clipped) continue;
+        ++checked;
+        for (int k = 0; k < 3; ++k) {
+            CHECK(clipped->min[k] >= cell.min[k]);
+            CHECK(clipped->max[k] <= cell.max[k]);
+            CHECK(static_cast<double>(clipped->min[k]) <= expected->first[k] + 1e-12);
+            CHECK(static_cast<double>(clipped->max[k]) >= expected->second[k] - 1e-12);
+            CHECK(static_cast<double>(clipped->min[k]) >= expected->first[k] - 1e-6);
+            CHECK(static_cast<double>(clipped->max[k]) <= expected->second[k] + 1e-6);
+        }
+    }
+    CHECK(checked > 500);
+}
+
+TEST_CASE("ch06/near-far-order", "[exercise]") {
+    // A node splitting x at 1, its own index 3 (so its below child is 4), its above child 7.
+    const KdTreeNode node = KdTreeNode::interior(0, 1.0f, 7);
+    auto order = [&](const Vec3& origin, const Vec3& direction) {
+        const Ray ray{origin, direction};
+        return order_children(node, 3, ray, 1.0f / direction);
+    };
+    const ChildOrder forward = order(Vec3(0, 5, 5), Vec3(1, 0, 0));
+    REQUIRE(forward.near_child == 4);
+    CHECK(forward.far_child == 7);
+    CHECK(forward.t_plane == 1.0f);
+    const ChildOrder backward = order(Vec3(3, 0, 0), Vec3(-0.5f, 0.5f, 0));
+    CHECK(backward.near_child == 7);
+    CHECK(backward.far_child == 4);
+    CHECK(backward.t_plane == 4.0f);
+    // Going away from the plane: the plane lies behind (t < 0), the first child is the one the
+    // ray's line has left, the one the ray is in is second.
+    const ChildOrder away = order(Vec3(0.5f, 0, 0), Vec3(-1, 0, 0));
+    CHECK(away.near_child == 7);
+    CHECK(away.far_child == 4);
+    CHECK(away.t_plane < 0.0f);
+    // From the plane: the order of the direction; lying in the plane, below first.
+    CHECK(order(Vec3(1, 0, 0), Vec3(1, 0, 0)).near_child == 4);
+    CHECK(order(Vec3(1, 0, 0), Vec3(-1, 0, 0)).near_child == 7);
+    const ChildOrder in_plane = order(Vec3(1, 0, 0), Vec3(0, 1, 0));
+    CHECK(in_plane.near_child == 4);
+    CHECK(std::isnan(in_plane.t_plane));
+    // Parallel to the plane, off it: the origin's side first, the plane never reached.
+    const ChildOrder parallel = order(Vec3(2, 0, 0), Vec3(0, 0, 1));
+    CHECK(parallel.near_child == 7);
+    CHECK(std::isinf(parallel.t_plane));
+    // The other axes.
+    const KdTreeNode y_node = KdTreeNode::interior(1, -2.0f, 9), z_node = KdTreeNode::interior(2, 0.0f, 2);
+    const Ray up{Vec3(0, -3, 0), glm::normalize(Vec3(0, 1, 1))};
+    CHECK(order_children(y_node, 0, up, 1.0f / up.direction).near_child == 1);
+    const Ray down{Vec3(0, 0, 1), Vec3(0, 0, -1)};
+    const ChildOrder z = order_children(z_node, 0, down, 1.0f / down.direction);
+    CHECK(z.near_child == 2);
+    CHECK(z.far_child == 1);
+    CHECK(z.t_plane == 1.0f);
+
+    // Through a whole tree: front to back, the closest hit is found first and the walk stops
+    // after it. In the wrong order, farther triangles would be reported.
+    TriangleMesh soup;
+    PCG32 random(8, 8);
+    for (std::uint32_t i = 0; i < 500; ++i) {
+        const Vec3 centre(random.next_float(), random.next_float(), random.next_float());
+        for (int k = 0; k < 3; ++k)
+            soup.positions.push_back(centre + 0.3f * Vec3(random.next_float() - 0.5f, random.next_float() - 0.5f, random.next_float() - 0.5f));
+        soup.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+    }
+    soup.face_materials.assign(soup.triangles.size(), 0u);
+    const std::vector<TriangleMesh> meshes{soup};
+    BruteForceAccelerator brute_force;
+    KdTreeAccelerator tree;
+    brute_force.build(meshes);
+    tree.build(meshes);
+    int differing = 0, hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 origin = Vec3(-0.5f) + 2.0f * Vec3(random.next_float(), random.next_float(), random.next_float());
+        const Ray ray{origin, ch01::sample_uniform_sphere(Vec2(random.next_float(), random.next_float()))};
+        const auto expected = brute_force.intersect(ray);
+        const auto found = tree.intersect(ray);
+        hits += expected ? 1 : 0;
+        const bool same = expected ? found && found->triangle == expected->triangle &&
+                                         std::bit_cast<std::uint32_t>(found->t) == std::bit_cast<std::uint32_t>(expected->t)
+                                   : !found;
+        differing += same ? 0 : 1;
+    }
+    CHECK(hits > 3000);
+    CHECK(differing == 0);
+}
