@@ -14,7 +14,7 @@ fi
 
 # Debian 12 packages the build needs (README.md, "Dependencies").
 packages=(g++ cmake make pkg-config python3 libglm-dev libstb-dev libtinyobjloader-dev catch2
-          nlohmann-json3-dev libcli11-dev libtinyexr-dev)
+          nlohmann-json3-dev libcli11-dev libopenexr-dev)
 missing=()
 for package in "${packages[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then

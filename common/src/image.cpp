@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace freezeray {
 
@@ -13,6 +14,14 @@ Image::Image(int width, int height, Spectrum fill) : width_(width), height_(heig
         throw std::invalid_argument("Image: negative size " + std::to_string(width) + "x" + std::to_string(height));
     }
     pixels_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
+}
+
+Image::Image(int width, int height, std::vector<Spectrum> pixels)
+    : width_(width), height_(height), pixels_(std::move(pixels)) {
+    if (width < 0 || height < 0 || pixels_.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+        throw std::invalid_argument("Image: " + std::to_string(pixels_.size()) + " pixels for a size of " +
+                                    std::to_string(width) + "x" + std::to_string(height));
+    }
 }
 
 // Encodes one linear channel with the sRGB transfer function (IEC 61966-2-1:1999, section 5.2):

@@ -21,7 +21,7 @@ inline constexpr std::int64_t MaxPixelCount = std::int64_t(1) << 28;
 // product at most MaxPixelCount). Takes 64-bit values so that the product cannot overflow.
 void check_image_size(std::int64_t width, std::int64_t height, const std::string& path);
 
-// OpenEXR through tinyexr (image_io_exr.cpp).
+// OpenEXR through the OpenEXR library (image_io_exr.cpp).
 Image decode_exr(const Bytes& bytes, const std::string& path);
 Bytes encode_exr(const Image& image, const std::string& path);
 

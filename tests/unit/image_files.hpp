@@ -99,4 +99,33 @@ inline void write_file(const std::string& path, const std::string& text, const s
     write_bytes(path, bytes);
 }
 
+// The offset of the value of the EXR header attribute `name` of type `type` (after its 4-byte
+// size) in `bytes`; fails the test if there is none.
+inline std::size_t exr_attribute_value(const std::vector<unsigned char>& bytes, const std::string& name, const std::string& type) {
+    const std::string key = name + '\0' + type + '\0';
+    const auto found = std::search(bytes.begin(), bytes.end(), key.begin(), key.end());
+    REQUIRE(found != bytes.end());
+    return static_cast<std::size_t>(found - bytes.begin()) + key.size() + 4;
+}
+
+// The offset just past the header of a single-part EXR file in `bytes`, where its table of chunk
+// offsets begins: the header is attributes (name\0 type\0 4-byte size, value) ended by an
+// empty name (https://openexr.com/en/latest/OpenEXRFileLayout.html).
+inline std::size_t exr_header_end(const std::vector<unsigned char>& bytes) {
+    std::size_t at = 8;  // magic number, version field
+    while (bytes.at(at) != 0) {
+        while (bytes.at(at++) != 0) {}  // name
+        while (bytes.at(at++) != 0) {}  // type
+        std::uint32_t size = 0;
+        for (int i = 3; i >= 0; --i) size = (size << 8) | bytes.at(at + static_cast<std::size_t>(i));
+        at += 4 + size;
+    }
+    return at + 1;
+}
+
+// Overwrites a little-endian 32-bit number in a byte vector.
+inline void put_little_endian(std::vector<unsigned char>& bytes, std::size_t at, std::uint32_t value) {
+    for (int i = 0; i < 4; ++i) bytes[at + static_cast<std::size_t>(i)] = static_cast<unsigned char>(value >> (8 * i));
+}
+
 }  // namespace freezeray::test

@@ -90,7 +90,8 @@ TEST_CASE("the fuzz entry points load valid seeds and refuse broken ones", "[uni
     CHECK(outcome("obj", "objects-mtl.obj", run_obj) == Outcome::loaded);
     CHECK(outcome("obj", "quad-mtl.obj", run_obj) == Outcome::loaded);
     CHECK(outcome("obj", "truncated.obj", run_obj) == Outcome::refused);
-    for (const char* file : {"exr-zip-float.bin", "exr-piz-half.bin", "exr-tiled.bin", "pfm-rgb.bin", "hdr-rle.bin",
+    for (const char* file : {"exr-zip-float.bin", "exr-piz-half.bin", "exr-tiled.bin", "exr-mipmap-zip.bin",
+                             "exr-b44-half.bin", "exr-dwab-float.bin", "pfm-rgb.bin", "hdr-rle.bin",
                              "png-rgb8.bin", "png-grey16.bin", "bmp.bin", "tga.bin"})
         CHECK(outcome("image", file, run_image) == Outcome::loaded);
     for (const char* file : {"exr-truncated.bin", "pfm-truncated.bin", "hdr-truncated.bin", "png-truncated.bin"})

@@ -5,10 +5,23 @@
 #include "image_files.hpp"
 
 #include <catch2/catch.hpp>
-#include <tinyexr.h>
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfMultiPartOutputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfOutputPart.h>
+#include <ImfPartType.h>
+#include <ImfStringAttribute.h>
+#include <ImfTiledOutputFile.h>
+#include <half.h>
+
+#include <bit>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,35 +50,54 @@ Image extreme_image() {
     return image;
 }
 
-// Writes an EXR with the given channels (all stored as `stored_type`) through tinyexr itself, to
-// test files we did not write: half floats, alpha, grey.
+// Writes an EXR with the given channels (all stored as `stored_type`, from float planes that
+// OpenEXR converts) through OpenEXR itself, to test files we did not write: half floats,
+// unsigned integers, alpha, grey, other compressions, tiles, a data window away from the origin.
+struct ExrLayout {
+    Imf::PixelType stored_type = Imf::FLOAT;
+    Imf::Compression compression = Imf::NO_COMPRESSION;
+    int tile_size = 0;                               // 0: scan lines
+    Imf::LevelMode levels = Imf::ONE_LEVEL;          // for tiles
+    Imath::V2i origin = Imath::V2i(0, 0);            // the data window's top left corner
+    Imf::LineOrder line_order = Imf::INCREASING_Y;
+};
+
 void write_exr_with_channels(const std::string& path, int width, int height, const std::vector<std::string>& names,
-                             std::vector<std::vector<float>> planes, int stored_type) {
-    const int count = static_cast<int>(names.size());
-    std::vector<EXRChannelInfo> channels(count);
-    std::vector<unsigned char*> pointers;
-    for (int i = 0; i < count; ++i) {
-        std::memset(&channels[i], 0, sizeof(EXRChannelInfo));
-        std::strcpy(channels[i].name, names[i].c_str());
-        pointers.push_back(reinterpret_cast<unsigned char*>(planes[i].data()));
+                             const std::vector<std::vector<float>>& planes, const ExrLayout& layout = {}) {
+    const Imath::Box2i window(layout.origin, layout.origin + Imath::V2i(width - 1, height - 1));
+    Imf::Header header(window, window, 1.0f, Imath::V2f(0.0f, 0.0f), 1.0f, layout.line_order, layout.compression);
+    // OpenEXR writes from buffers of the stored type: the planes converted to half or uint.
+    std::vector<std::vector<half>> halves;
+    std::vector<std::vector<std::uint32_t>> integers;
+    Imf::FrameBuffer frame;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        header.channels().insert(names[i], Imf::Channel(layout.stored_type));
+        const void* buffer = planes[i].data();
+        if (layout.stored_type == Imf::HALF) {
+            buffer = halves.emplace_back(planes[i].begin(), planes[i].end()).data();
+        } else if (layout.stored_type == Imf::UINT) {
+            buffer = integers.emplace_back(planes[i].begin(), planes[i].end()).data();
+        }
+        frame.insert(names[i], Imf::Slice::Make(layout.stored_type, buffer, window));
     }
-    std::vector<int> input_types(count, TINYEXR_PIXELTYPE_FLOAT), stored_types(count, stored_type);
-    EXRHeader header;
-    InitEXRHeader(&header);
-    header.num_channels = count;
-    header.channels = channels.data();
-    header.pixel_types = input_types.data();
-    header.requested_pixel_types = stored_types.data();
-    header.compression_type = TINYEXR_COMPRESSIONTYPE_NONE;
-    EXRImage image;
-    InitEXRImage(&image);
-    image.num_channels = count;
-    image.images = pointers.data();
-    image.width = width;
-    image.height = height;
-    const char* error = nullptr;
-    REQUIRE(SaveEXRImageToFile(&image, &header, path.c_str(), &error) == TINYEXR_SUCCESS);
+    if (layout.tile_size == 0) {
+        Imf::OutputFile file(path.c_str(), header);
+        file.setFrameBuffer(frame);
+        file.writePixels(height);
+        return;
+    }
+    header.setTileDescription(Imf::TileDescription(layout.tile_size, layout.tile_size, layout.levels));
+    Imf::TiledOutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writeTiles(0, file.numXTiles(0) - 1, 0, file.numYTiles(0) - 1);  // the full-resolution level
+    // The smaller levels of a mipmap, each from the same planes: only their presence matters here.
+    for (int level = 1; level < file.numLevels(); ++level) {
+        file.writeTiles(0, file.numXTiles(level) - 1, 0, file.numYTiles(level) - 1, level);
+    }
 }
+
+// The bits of a float, to compare values exactly (-0 and 0 differ, a NaN equals itself).
+std::uint32_t bits_of(float value) { return std::bit_cast<std::uint32_t>(value); }
 
 }  // namespace
 
@@ -250,21 +282,185 @@ TEST_CASE("the EXR reader takes half floats, ignores alpha, and reads Y as grey"
     TemporaryFolder folder;
     // 2x1 image; values exactly representable in half precision.
     write_exr_with_channels(folder.file("half.exr"), 2, 1, {"A", "B", "G", "R"},
-                            {{1.0f, 0.5f}, {0.25f, 4.0f}, {0.5f, 2.0f}, {0.75f, 1024.0f}}, TINYEXR_PIXELTYPE_HALF);
+                            {{1.0f, 0.5f}, {0.25f, 4.0f}, {0.5f, 2.0f}, {0.75f, 1024.0f}}, {.stored_type = Imf::HALF});
     const Image half = read_image(folder.file("half.exr"));
     REQUIRE(half.width() == 2);
     CHECK(half.at(0, 0) == Spectrum(0.75f, 0.5f, 0.25f));
     CHECK(half.at(1, 0) == Spectrum(1024.0f, 2.0f, 4.0f));
 
-    write_exr_with_channels(folder.file("grey.exr"), 1, 2, {"Y"}, {{0.125f, 3.0f}}, TINYEXR_PIXELTYPE_FLOAT);
+    write_exr_with_channels(folder.file("grey.exr"), 1, 2, {"Y"}, {{0.125f, 3.0f}});
     const Image grey = read_image(folder.file("grey.exr"));
     REQUIRE(grey.height() == 2);
     CHECK(grey.at(0, 0) == Spectrum(0.125f));
     CHECK(grey.at(0, 1) == Spectrum(3.0f));
 
-    write_exr_with_channels(folder.file("depth.exr"), 1, 1, {"Z", "W"}, {{1.0f}, {2.0f}}, TINYEXR_PIXELTYPE_FLOAT);
+    // OpenEXR keeps the channel list in alphabetical order, so the message lists W before Z.
+    write_exr_with_channels(folder.file("depth.exr"), 1, 1, {"Z", "W"}, {{1.0f}, {2.0f}});
     CHECK_THAT(input_error_message([&] { read_image(folder.file("depth.exr")); }),
-               Catch::Contains("depth.exr") && Catch::Contains("Z, W"));
+               Catch::Contains("depth.exr") && Catch::Contains("W, Z"));
+}
+
+TEST_CASE("an EXR round trip is bit-exact, as 32-bit float B, G, R with ZIP, and keeps the freezeray:* attributes",
+          "[unit][image]") {
+    TemporaryFolder folder;
+    Image original = extreme_image();
+    // Values that == cannot tell apart or that never equal themselves: every bit must survive.
+    original.at(1, 0) = Spectrum(-0.0f, std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::infinity());
+    original.at(2, 0) = Spectrum(-std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN(),
+                                 std::numeric_limits<float>::max());
+    original.metadata = {{"freezeray:scene", "scenes/cornell-box/scene.json"}, {"freezeray:integrator", "pt-mis"},
+                         {"freezeray:samples_per_pixel", "1024"}, {"freezeray:seed", "7"},
+                         {"freezeray:seconds", "12.5"}, {"freezeray:estimated_relative_mse", "0.00042"}};
+    const std::string path = folder.file("exact.exr");
+    write_image(path, original);
+
+    const Image read = read_image(path);
+    REQUIRE(read.width() == original.width());
+    REQUIRE(read.height() == original.height());
+    for (std::size_t i = 0; i < original.pixel_count(); ++i) {
+        INFO("pixel " << i);
+        for (int c = 0; c < 3; ++c) CHECK(bits_of(read[i][c]) == bits_of(original[i][c]));
+    }
+    CHECK(read.metadata == original.metadata);
+
+    // What is in the file, as OpenEXR itself reads it.
+    Imf::InputFile file(path.c_str());
+    CHECK(file.header().compression() == Imf::ZIP_COMPRESSION);
+    std::vector<std::string> channels;
+    for (auto channel = file.header().channels().begin(); channel != file.header().channels().end(); ++channel) {
+        channels.push_back(channel.name());
+        CHECK(channel.channel().type == Imf::FLOAT);
+    }
+    CHECK(channels == std::vector<std::string>{"B", "G", "R"});
+    const auto* spp = file.header().findTypedAttribute<Imf::StringAttribute>("freezeray:samples_per_pixel");
+    REQUIRE(spp != nullptr);
+    CHECK(spp->value() == "1024");
+}
+
+TEST_CASE("the EXR reader takes every lossless compression, tiles, mipmaps, uint, an offset window, bottom-up rows",
+          "[unit][image]") {
+    TemporaryFolder folder;
+    // A 37x21 image (more than one block of 16 or 32 rows, tiles clipped at the edges) whose
+    // values are whole numbers, exact in half precision and as unsigned integers.
+    const int width = 37, height = 21;
+    std::vector<std::vector<float>> planes(3, std::vector<float>(width * height));
+    for (int i = 0; i < width * height; ++i) {
+        planes[0][static_cast<std::size_t>(i)] = static_cast<float>(i % 97);
+        planes[1][static_cast<std::size_t>(i)] = static_cast<float>((i * 7) % 13);
+        planes[2][static_cast<std::size_t>(i)] = static_cast<float>(i / width);
+    }
+    struct Case {
+        const char* name;
+        ExrLayout layout;
+    };
+    const Case cases[] = {
+        {"none.exr", {}},
+        {"rle.exr", {.compression = Imf::RLE_COMPRESSION}},
+        {"zips.exr", {.compression = Imf::ZIPS_COMPRESSION}},
+        {"zip.exr", {.compression = Imf::ZIP_COMPRESSION}},
+        {"piz.exr", {.compression = Imf::PIZ_COMPRESSION}},
+        {"pxr24-half.exr", {.stored_type = Imf::HALF, .compression = Imf::PXR24_COMPRESSION}},  // lossless on half
+        {"uint.exr", {.stored_type = Imf::UINT, .compression = Imf::ZIP_COMPRESSION}},
+        {"tiled.exr", {.compression = Imf::ZIP_COMPRESSION, .tile_size = 8}},
+        {"mipmap.exr", {.stored_type = Imf::HALF, .compression = Imf::PIZ_COMPRESSION, .tile_size = 16,
+                        .levels = Imf::MIPMAP_LEVELS}},
+        {"big-tiles.exr", {.tile_size = 64}},  // one tile larger than the image
+        {"offset.exr", {.compression = Imf::ZIP_COMPRESSION, .origin = Imath::V2i(-5, 1000)}},
+        {"bottom-up.exr", {.compression = Imf::PIZ_COMPRESSION, .line_order = Imf::DECREASING_Y}},
+    };
+    for (const Case& test : cases) {
+        INFO(test.name);
+        write_exr_with_channels(folder.file(test.name), width, height, {"R", "G", "B"}, planes, test.layout);
+        const Image read = read_image(folder.file(test.name));
+        REQUIRE(read.width() == width);
+        REQUIRE(read.height() == height);
+        int wrong = 0;
+        for (std::size_t i = 0; i < read.pixel_count(); ++i) {
+            for (int c = 0; c < 3; ++c) wrong += read[i][c] != planes[static_cast<std::size_t>(c)][i];
+        }
+        CHECK(wrong == 0);
+    }
+}
+
+TEST_CASE("EXR tiles too large for their image are refused before OpenEXR allocates them", "[unit][image]") {
+    TemporaryFolder folder;
+    // A 4x4 file in one tile of 64 x 64 is read (a tile larger than the image is legal) ...
+    write_exr_with_channels(folder.file("tiled.exr"), 4, 4, {"Y"}, {std::vector<float>(16, 2.0f)}, {.tile_size = 64});
+    CHECK(read_image(folder.file("tiled.exr")).at(3, 3) == Spectrum(2.0f));
+    // ... but with tiles of 60000 x 60000, OpenEXR would allocate 14 GB for one row of them.
+    std::vector<unsigned char> bytes = read_bytes(folder.file("tiled.exr"));
+    const std::size_t tiles = exr_attribute_value(bytes, "tiles", "tiledesc");
+    put_little_endian(bytes, tiles, 60000);
+    put_little_endian(bytes, tiles + 4, 60000);
+    write_bytes(folder.file("huge-tiles.exr"), bytes);
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("huge-tiles.exr")); }),
+               Catch::Contains(folder.file("huge-tiles.exr")) && Catch::Contains("too large"));
+}
+
+TEST_CASE("an uncompressed EXR block shorter than its pixels is refused", "[unit][image]") {
+    // OpenEXR 3.1 would take the short block's data as its pixels and fill the rest from its
+    // buffer. Found by fuzz_image for scan lines (the input without its selector byte) ...
+    TemporaryFolder folder;
+    std::vector<unsigned char> bytes =
+        read_bytes(std::string(FREEZERAY_SOURCE_DIR) + "/tests/fuzz/regressions/image/exr-uint-chunk-too-short.bin");
+    bytes.erase(bytes.begin());
+    write_bytes(folder.file("short-line.exr"), bytes);
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("short-line.exr")); }),
+               Catch::Contains(folder.file("short-line.exr")) && Catch::Contains("uncompressed OpenEXR scan line"));
+
+    // ... and made here for tiles: the first tile's data size, 4 bytes short.
+    write_exr_with_channels(folder.file("short-tile.exr"), 4, 4, {"Y"}, {std::vector<float>(16, 1.0f)}, {.tile_size = 2});
+    REQUIRE(read_image(folder.file("short-tile.exr")).at(3, 3) == Spectrum(1.0f));
+    bytes = read_bytes(folder.file("short-tile.exr"));
+    const std::size_t table = exr_header_end(bytes);
+    const std::size_t first_tile = bytes[table] | (std::size_t(bytes[table + 1]) << 8);  // the first table entry
+    // A tile chunk: tile x, tile y, level x, level y, data size, data (2 x 2 floats, 16 bytes).
+    REQUIRE(bytes[first_tile + 16] == 16);
+    bytes[first_tile + 16] = 12;
+    write_bytes(folder.file("short-tile.exr"), bytes);
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("short-tile.exr")); }),
+               Catch::Contains(folder.file("short-tile.exr")) && Catch::Contains("uncompressed OpenEXR tile (0, 0)"));
+}
+
+TEST_CASE("multi-part and subsampled EXR files are refused with the reason", "[unit][image]") {
+    TemporaryFolder folder;
+    const std::vector<float> plane(16, 1.0f);
+
+    Imf::Header part(4, 4);
+    part.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+    part.setName("one");
+    part.setType(Imf::SCANLINEIMAGE);
+    Imf::Header other = part;
+    other.setName("two");
+    const Imf::Header parts[] = {part, other};
+    {
+        Imf::MultiPartOutputFile file(folder.file("parts.exr").c_str(), parts, 2);
+        for (int p = 0; p < 2; ++p) {
+            Imf::OutputPart output(file, p);
+            Imf::FrameBuffer frame;
+            frame.insert("Y", Imf::Slice::Make(Imf::FLOAT, plane.data(), part.dataWindow()));
+            output.setFrameBuffer(frame);
+            output.writePixels(4);
+        }
+    }
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("parts.exr")); }),
+               Catch::Contains(folder.file("parts.exr")) && Catch::Contains("multi-part"));
+
+    // Chroma channels at half resolution, as in OpenEXR's luminance/chroma images.
+    Imf::Header header(4, 4);
+    header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+    header.channels().insert("BY", Imf::Channel(Imf::FLOAT, 2, 2));
+    {
+        const std::vector<float> chroma(4, 0.5f);
+        Imf::OutputFile file(folder.file("chroma.exr").c_str(), header);
+        Imf::FrameBuffer frame;
+        frame.insert("Y", Imf::Slice::Make(Imf::FLOAT, plane.data(), header.dataWindow()));
+        frame.insert("BY", Imf::Slice::Make(Imf::FLOAT, chroma.data(), header.dataWindow(), 0, 0, 2, 2));
+        file.setFrameBuffer(frame);
+        file.writePixels(4);
+    }
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("chroma.exr")); }),
+               Catch::Contains(folder.file("chroma.exr")) && Catch::Contains("'BY' is subsampled"));
 }
 
 TEST_CASE("PNG exposure scales by 2^stops before encoding; float formats ignore it", "[unit][image]") {

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>  // getrusage, for the memory a read takes
+
 using namespace freezeray;
 using namespace freezeray::test;
 using Catch::Contains;
@@ -186,16 +188,17 @@ TEST_CASE("a JPEG far too short for the size its header claims is refused before
     CHECK(seed.width() > 0);
 }
 
-TEST_CASE("a PIZ chunk whose bitmap runs past its end is refused before tinyexr reads past it", "[unit][image]") {
-    // Found by fuzz_image: a 192-byte PIZ chunk whose bitmap spans bytes 0 to 227; tinyexr
-    // copied them from beyond the end of the file. The files without the fuzz target's first byte.
+TEST_CASE("a PIZ chunk whose bitmap runs past its end is refused", "[unit][image]") {
+    // Found by fuzz_image when EXR went through tinyexr: a 192-byte PIZ chunk whose bitmap spans
+    // bytes 0 to 227, which tinyexr copied from beyond the end of the file. OpenEXR's PIZ decoder
+    // compares the bitmap with the chunk's size itself. The files without the fuzz target's first byte.
     const std::string folder_path = std::string(FREEZERAY_SOURCE_DIR) + "/tests/fuzz/";
     TemporaryFolder folder;
     std::vector<unsigned char> bytes = read_bytes(folder_path + "regressions/image/exr-piz-bitmap-past-end.bin");
     bytes.erase(bytes.begin());
     write_bytes(folder.file("piz.exr"), bytes);
     CHECK_THAT(input_error_message([&] { read_image(folder.file("piz.exr")); }),
-               Contains(folder.file("piz.exr")) && Contains("PIZ chunk"));
+               Contains(folder.file("piz.exr")) && Contains("cannot decode the OpenEXR pixels"));
     // A valid PIZ-compressed file (the fuzzer's seed) is still read.
     bytes = read_bytes(folder_path + "corpus/image/exr-piz-half.bin");
     bytes.erase(bytes.begin());
@@ -219,6 +222,77 @@ TEST_CASE("an EXR data window of more than 2^28 pixels is refused before decodin
     }
     write_bytes(folder.file("huge.exr"), bytes);
     CHECK_THAT(input_error_message([&] { read_image(folder.file("huge.exr")); }), Contains(folder.file("huge.exr")));
+}
+
+namespace {
+
+// The most memory this process has held at once so far, in kilobytes (getrusage, POSIX).
+long peak_memory_kilobytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+}  // namespace
+
+TEST_CASE("an EXR file claiming 16384 x 16384 pixels that holds 16 rows is refused without allocating the image",
+          "[unit][image]") {
+    // 2^28 pixels is the most we accept, 3 GB of our pixels: memory must follow what the file
+    // really decodes, not what its header claims. The file: one valid ZIP block of 16 rows of
+    // 16384 pixels, a header claiming 16384 rows, and all 1024 entries of the offset table
+    // pointing at that block, so OpenEXR takes the file as complete and decodes the first block.
+    TemporaryFolder folder;
+    write_image(folder.file("claims.exr"), Image(16384, 16, Spectrum(0.5f)));
+    const std::vector<unsigned char> written = read_bytes(folder.file("claims.exr"));
+    const std::size_t header_end = exr_header_end(written);
+    std::vector<unsigned char> bytes(written.begin(), written.begin() + long(header_end));
+    put_little_endian(bytes, exr_attribute_value(bytes, "dataWindow", "box2i") + 12, 16383);  // max y
+    const std::uint64_t block = header_end + 8 * 1024;
+    for (int entry = 0; entry < 1024; ++entry) {
+        for (int i = 0; i < 8; ++i) bytes.push_back(static_cast<unsigned char>(block >> (8 * i)));
+    }
+    bytes.insert(bytes.end(), written.begin() + long(header_end + 8), written.end());
+    write_bytes(folder.file("claims.exr"), bytes);
+
+    const long before = peak_memory_kilobytes();
+    CHECK_THAT(input_error_message([&] { read_image(folder.file("claims.exr")); }),
+               Contains(folder.file("claims.exr")) && Contains("cannot decode the OpenEXR pixels"));
+    CHECK(peak_memory_kilobytes() - before < 256 * 1024);
+}
+
+TEST_CASE("EXR header attributes are checked against the file before OpenEXR reads them", "[unit][image]") {
+    TemporaryFolder folder;
+    Image image(2, 2, Spectrum(0.5f));
+    image.metadata = {{"freezeray:scene", "scene.json"}};
+    write_image(folder.file("whole.exr"), image);
+    const std::vector<unsigned char> whole = read_bytes(folder.file("whole.exr"));
+    const auto refused_with = [&](const std::string& name, const std::vector<unsigned char>& bytes,
+                                  const std::string& reason) {
+        INFO(name);
+        write_bytes(folder.file(name), bytes);
+        CHECK_THAT(input_error_message([&] { read_image(folder.file(name)); }),
+                   Contains(folder.file(name)) && Contains(reason));
+    };
+
+    // A string claiming 2^31 - 1 bytes: OpenEXR would allocate them before finding the file short.
+    std::vector<unsigned char> bytes = whole;
+    put_little_endian(bytes, exr_attribute_value(bytes, "freezeray:scene", "string") - 4, 0x7fffffff);
+    refused_with("long-string.exr", bytes, "attribute 'freezeray:scene' runs past the end of the file");
+
+    // A box2i declared 12 bytes long: OpenEXR reads 16 whatever the size says.
+    bytes = whole;
+    put_little_endian(bytes, exr_attribute_value(bytes, "dataWindow", "box2i") - 4, 12);
+    refused_with("short-box.exr", bytes, "attribute 'dataWindow' of type box2i has 12 bytes, not 16");
+
+    // A channel list whose end is cut off by its declared size.
+    bytes = whole;
+    const std::size_t channels = exr_attribute_value(bytes, "channels", "chlist");
+    put_little_endian(bytes, channels - 4, 18 * 3);  // three channels of 18 bytes, no terminator
+    refused_with("open-channel-list.exr", bytes, "the channel list ends inside a channel name");
+
+    // A header cut inside the type name of its first attribute ("channels\0chlist\0", size, value).
+    refused_with("no-end.exr", std::vector<unsigned char>(whole.begin(), whole.begin() + long(channels - 7)),
+                 "the header ends inside an attribute type");
 }
 
 TEST_CASE("a file whose content does not match its extension throws InputError", "[unit][image]") {

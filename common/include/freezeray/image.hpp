@@ -14,6 +14,8 @@ class Image {
 public:
     Image() = default;
     Image(int width, int height, Spectrum fill = Spectrum(0.0f));
+    // Takes `pixels` (row-major, row 0 at the top), which must hold width x height of them.
+    Image(int width, int height, std::vector<Spectrum> pixels);
 
     int width() const { return width_; }
     int height() const { return height_; }
