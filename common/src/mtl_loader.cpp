@@ -2,7 +2,7 @@
 #include "mtl_loader.hpp"
 
 #include "freezeray/error.hpp"
-#include "obj_text_check.hpp"
+#include "freezeray/obj_text_check.hpp"
 
 #include <cmath>
 #include <filesystem>

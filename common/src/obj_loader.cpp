@@ -8,7 +8,7 @@
 
 #include "freezeray/error.hpp"
 #include "mtl_loader.hpp"
-#include "obj_text_check.hpp"
+#include "freezeray/obj_text_check.hpp"
 
 #include <tiny_obj_loader.h>
 

@@ -1,5 +1,5 @@
 // The first pass over an OBJ file's text: see obj_text_check.hpp for why it exists.
-#include "obj_text_check.hpp"
+#include "freezeray/obj_text_check.hpp"
 
 #include "freezeray/error.hpp"
 

@@ -3,7 +3,8 @@
 // vertex list (reading it later would crash), and its messages carry no line numbers. This
 // pass finds those problems with "file.obj:LINE" and collects the lines the loader needs to
 // report later problems (a missing MTL file, an unknown material) where they are written.
-// Private to obj_loader.cpp.
+// Used by obj_loader.cpp and by the ray benchmark's loader
+// (chapters/06-kd-tree/benchmark/benchmark_mesh.cpp).
 #pragma once
 
 #include <cstddef>
