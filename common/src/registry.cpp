@@ -58,14 +58,14 @@ Registry::Registry(std::string program, int chapter) : program_(std::move(progra
 
 namespace {
 
-// Adds or replaces `name` in `map`; a replaced entry keeps the chapter that introduced the name
+// Adds or replaces `name` in `map`; a replacement remembers the chapter that introduced the name
 // (chapter 02's cosine-sampled "diffuse" replaces chapter 01's, which introduced it).
 template <typename Factory>
 void add_entry(std::map<std::string, std::pair<Registry::Entry, Factory>>& map, const std::string& name, int chapter,
                const std::string& summary, Factory factory) {
     const auto existing = map.find(name);
-    const int introduced = existing != map.end() ? existing->second.first.chapter : chapter;
-    map[name] = {Registry::Entry{name, introduced, summary}, std::move(factory)};
+    const int introduced = existing != map.end() ? existing->second.first.introduced_in : chapter;
+    map[name] = {Registry::Entry{name, chapter, summary, introduced}, std::move(factory)};
 }
 
 }  // namespace
@@ -84,7 +84,7 @@ void Registry::add_light(const std::string& name, int chapter, const std::string
     add_entry(lights_, name, chapter, summary, std::move(f));
 }
 void Registry::add_area_light(int chapter, const std::string& summary, AreaLightFactory f) {
-    area_light_ = {Entry{"area", chapter, summary}, std::move(f)};
+    area_light_ = {Entry{"area", chapter, summary, chapter}, std::move(f)};
 }
 void Registry::add_texture_layout(const std::string& name, int chapter, const std::string& summary,
                                   TextureLayoutFactory f) {

@@ -61,8 +61,8 @@ TEST_CASE("the course catalogue lists exactly what the complete renderer registe
     for (CapabilityKind kind : {CapabilityKind::Integrator, CapabilityKind::Material, CapabilityKind::Accelerator,
                                 CapabilityKind::Light, CapabilityKind::TextureLayout})
         for (const Registry::Entry& entry : registry.list(kind)) {
-            INFO(capability_kind_name(kind) << " '" << entry.name << "' registered by chapter " << entry.chapter);
-            CHECK(registry.chapter_introducing(kind, entry.name) == entry.chapter);
+            INFO(capability_kind_name(kind) << " '" << entry.name << "' introduced by chapter " << entry.introduced_in);
+            CHECK(registry.chapter_introducing(kind, entry.name) == entry.introduced_in);
         }
     CHECK(registry.chapter() == last_chapter());
 }

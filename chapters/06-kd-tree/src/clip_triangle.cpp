@@ -20,6 +20,7 @@ struct ClipPolygon {
     void add(const glm::dvec3& v) { vertices[static_cast<std::size_t>(count++)] = v; }
 };
 
+// BOOK(clip-helpers)
 // The largest float not above x, and the smallest not below: float(x) when x is a float.
 float float_below(double x) {
     float f = static_cast<float>(x);
@@ -42,9 +43,11 @@ glm::dvec3 crossing_point(const glm::dvec3& a, const glm::dvec3& b, int axis, do
     p[axis] = value;
     return p;
 }
+// END BOOK
 
 }  // namespace
 
+// BOOK(clip-triangle-to-box)
 std::optional<Bounds3> clip_triangle_to_box(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Bounds3& box) {
     // EXERCISE(ch06/clip-triangle): clip the triangle against the six planes of the box in turn (keeping points on a plane), and return the bounds of what is left, rounded outward to floats and within the box, or nothing when nothing is left
     ClipPolygon polygon;
@@ -81,5 +84,6 @@ std::optional<Bounds3> clip_triangle_to_box(const Vec3& p0, const Vec3& p1, cons
     return bounds;
     // END EXERCISE
 }
+// END BOOK
 
 }  // namespace freezeray::ch06

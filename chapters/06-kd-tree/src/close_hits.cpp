@@ -5,6 +5,7 @@
 
 namespace freezeray::ch06 {
 
+// BOOK(brute-force-choice)
 std::optional<CloseHits::Entry> CloseHits::brute_force_choice(const Ray& ray, const Vec3& inverse_direction,
                                                                const RayShear& shear,
                                                                const std::vector<TriangleVertices>& vertices,
@@ -35,5 +36,6 @@ std::optional<CloseHits::Entry> CloseHits::brute_force_choice(const Ray& ray, co
     }
     return choice;
 }
+// END BOOK
 
 }  // namespace freezeray::ch06

@@ -58,6 +58,7 @@ public:
     }
 
 private:
+    // BOOK(kdtree-build-node)
     void build_node(NodeEvents events, std::size_t count, const Bounds3& cell, int depth, int unproductive) {
         if (tree_.nodes.size() > KdTreeNode::MaxIndex) throw std::length_error("kd-tree: more nodes than its 30-bit child index holds");
         if (count == 0 || count <= static_cast<std::size_t>(settings_.leaf_size) || depth >= depth_limit_ ||
@@ -93,6 +94,7 @@ private:
         tree_.nodes[index].set_above_child(static_cast<std::uint32_t>(tree_.nodes.size()));
         build_node(std::move(children.above), children.above_count, above_cell, depth + 1, unproductive);
     }
+    // END BOOK
 
     void make_leaf(const NodeEvents& events, int depth) {
         const std::vector<std::uint32_t> triangles = triangles_of(events);

@@ -10,6 +10,7 @@
 
 namespace freezeray::ch06 {
 
+// BOOK(kdtree-max-depth)
 int effective_max_depth(const KdTreeSettings& settings, std::size_t triangle_count) {
     int depth = settings.max_depth;
     if (depth <= 0) {
@@ -20,6 +21,7 @@ int effective_max_depth(const KdTreeSettings& settings, std::size_t triangle_cou
     }
     return std::clamp(depth, 1, TraversalStackSize);
 }
+// END BOOK
 
 namespace {
 

@@ -81,6 +81,7 @@ bool clip_to_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3
 }
 
 
+// BOOK(traversal-beam)
 // The beam around a ray (see BeamRadiusScale): its radius in world units, and the slack it adds to
 // distances along the ray.
 struct Beam {
@@ -98,12 +99,14 @@ Beam beam_around(const Ray& ray, const Bounds3& bounds) {
     const float radius = BeamRadiusScale * farthest;
     return {radius, 2.0f * radius / largest_direction};
 }
+// END BOOK
 
 struct TraversalTask {
     std::uint32_t node;
     float t_min, t_max;
 };
 
+// BOOK(kdtree-traverse)
 // Visits the leaves the beam around the ray's range [t_min, t_max] touches, in the order the
 // ray enters them. visit_leaf(leaf) returns the distance beyond which nothing is wanted (the
 // closest hit so far, or -infinity to stop); cells the beam reaches only beyond it are skipped.
@@ -172,6 +175,7 @@ void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction,
         t_max = stack[top].t_max;
     }
 }
+// END BOOK
 
 // Calls f(global triangle index) for each triangle of a leaf.
 template <typename F>
@@ -188,6 +192,7 @@ void for_each_triangle(const KdTree& tree, const KdTreeNode& leaf, F&& f) {
 
 }  // namespace
 
+// BOOK(kdtree-intersect)
 std::optional<Hit> KdTreeAccelerator::intersect(const Ray& ray) const {
     if (tree_.nodes.empty() || !is_traceable(ray)) return std::nullopt;
     const Vec3 inverse_direction = 1.0f / ray.direction;
@@ -217,6 +222,7 @@ std::optional<Hit> KdTreeAccelerator::intersect(const Ray& ray) const {
     const TriangleId& id = ids_[choice->triangle];
     return make_hit(*meshes_, id.mesh, id.triangle, choice->hit);
 }
+// END BOOK
 
 bool KdTreeAccelerator::occluded(const Ray& ray) const {
     if (tree_.nodes.empty() || !is_traceable(ray)) return false;

@@ -35,6 +35,7 @@ std::vector<std::uint32_t> triangles_of(const NodeEvents& events) {
 
 namespace {
 
+// BOOK(classify-triangles)
 // The classification of Wald and Havran 2006, section 4.3: a triangle is below the plane if its box ends at or
 // before it, above if it starts at or after it, both if the plane cuts its box; a triangle lying
 // in the plane goes to the side the cost model chose.
@@ -51,6 +52,7 @@ void classify_triangles(const std::vector<SplitEvent>& axis_events, const SplitP
         }
     }
 }
+// END BOOK
 
 // The cut triangle's box within a child cell. The exact intersection is never empty (the box
 // the plane cuts is that of the triangle's part inside the node, so that part has points on
@@ -83,6 +85,7 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
         else if (side == Side::Above) ++children.above_count;
     }
 
+    // BOOK(cut-triangles)
     // Triangles the plane cuts: clipped to each child's cell, their new events sorted apart.
     Bounds3 below_cell = cell, above_cell = cell;
     below_cell.max[plane.axis] = plane.position;
@@ -98,6 +101,7 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
     }
     sort_events(cut_below);
     sort_events(cut_above);
+    // END BOOK
 
     // Merging two sorted lists is linear (section 4.3).
     auto merge_into = [](std::vector<SplitEvent>& kept, const std::vector<SplitEvent>& cut) {

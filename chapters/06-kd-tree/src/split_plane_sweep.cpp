@@ -8,6 +8,7 @@
 
 namespace freezeray::ch06 {
 
+// BOOK(split-plane-sweep)
 SplitPlane find_split_plane(const NodeEvents& events, const Bounds3& cell, std::size_t triangle_count,
                             const KdTreeSettings& settings) {
     SplitPlane best;
@@ -42,5 +43,6 @@ SplitPlane find_split_plane(const NodeEvents& events, const Bounds3& cell, std::
     }
     return best;
 }
+// END BOOK
 
 }  // namespace freezeray::ch06

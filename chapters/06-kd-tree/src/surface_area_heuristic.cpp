@@ -10,6 +10,7 @@ double surface_area(const Bounds3& box) {
     return 2.0 * (dx * dy + dy * dz + dz * dx);
 }
 
+// BOOK(sah-cost-model)
 double leaf_cost(const KdTreeSettings& settings, std::size_t triangle_count) {
     return static_cast<double>(settings.intersection_cost) * static_cast<double>(triangle_count);
 }
@@ -29,5 +30,6 @@ double split_cost(const KdTreeSettings& settings, const Bounds3& cell, int axis,
                (probability_below * static_cast<double>(below_count) + probability_above * static_cast<double>(above_count));
     // END EXERCISE
 }
+// END BOOK
 
 }  // namespace freezeray::ch06

@@ -65,7 +65,7 @@ public:
     int chapter() const { return chapter_; }
 
     // Adding a name that exists replaces it: a later chapter may supersede an earlier one's
-    // implementation (the replaced entry's chapter is kept for messages).
+    // implementation (Entry::introduced_in keeps the chapter that introduced the name).
     void add_integrator(const std::string& name, int chapter, const std::string& summary, IntegratorFactory factory);
     void add_material(const std::string& name, int chapter, const std::string& summary, MaterialFactory factory);
     void add_accelerator(const std::string& name, int chapter, const std::string& summary, AcceleratorFactory factory);
@@ -117,8 +117,9 @@ public:
 
     struct Entry {
         std::string name;
-        int chapter;
+        int chapter;          // the chapter whose implementation this is
         std::string summary;
+        int introduced_in;    // the chapter that first registered the name (the catalogue's)
     };
     // Everything of a kind, in name order, for `--help` and `info`.
     std::vector<Entry> list(CapabilityKind kind) const;

@@ -10,6 +10,7 @@
 
 namespace freezeray::ch06 {
 
+// BOOK(kdtree-node)
 // One node in 8 bytes. The low 2 bits of `flags` say what it is: 0, 1, 2 an interior node
 // splitting along x, y or z, 3 a leaf; the other 30 bits hold the index of the above child (an
 // interior node: its below child comes right after it) or the leaf's triangle count. `payload`
@@ -49,6 +50,7 @@ private:
 };
 
 static_assert(sizeof(KdTreeNode) == 8, "a node is 8 bytes (pbrt-v3's KdAccelNode)");
+// END BOOK
 
 // A triangle's three vertices, copied from its mesh so that a leaf's triangles are read from one
 // array (the same floats, so the same intersections as from the mesh).

@@ -10,6 +10,7 @@
 
 namespace freezeray::ch06 {
 
+// BOOK(order-children)
 // The children of an interior node in the order the ray passes through them, and where it
 // crosses the split plane.
 struct ChildOrder {
@@ -34,5 +35,6 @@ inline ChildOrder order_children(const KdTreeNode& node, std::uint32_t index, co
     return below_first ? ChildOrder{below, above, t_plane} : ChildOrder{above, below, t_plane};
     // END EXERCISE
 }
+// END BOOK
 
 }  // namespace freezeray::ch06

@@ -13,6 +13,7 @@
 
 namespace freezeray::ch06 {
 
+// BOOK(split-event-order)
 // At equal positions ends come first, then planar triangles, then starts, so that a sweep over
 // the events counts, at each candidate plane, the triangles below it before those above it.
 enum class EventType : std::uint8_t { End = 0, Planar = 1, Start = 2 };
@@ -30,6 +31,7 @@ inline bool operator<(const SplitEvent& a, const SplitEvent& b) {
     if (a.type != b.type) return a.type < b.type;
     return a.triangle < b.triangle;
 }
+// END BOOK
 
 // A node's events, one sorted list per axis. Every triangle of the node has on each axis either
 // one Start and one End event or, when its box is flat along that axis, one Planar event.
