@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace freezeray {
 
@@ -64,7 +65,8 @@ Hit make_hit(const std::vector<TriangleMesh>& meshes, std::uint32_t mesh_index, 
     return hit;
 }
 
-bool ray_intersects_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds) {
+bool clip_ray_to_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds, float& t_enter,
+                        float& t_exit) {
     float t0 = 0.0f;
     float t1 = ray.tmax;
     for (int axis = 0; axis < 3; ++axis) {
@@ -78,7 +80,14 @@ bool ray_intersects_bounds(const Ray& ray, const Vec3& inverse_direction, const 
         t1 = t_far < t1 ? t_far : t1;
         if (t0 > t1) return false;
     }
+    t_enter = t0;
+    t_exit = t1;
     return true;
+}
+
+bool ray_intersects_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds) {
+    float t_enter = 0.0f, t_exit = 0.0f;
+    return clip_ray_to_bounds(ray, inverse_direction, bounds, t_enter, t_exit);
 }
 
 void BruteForceAccelerator::build(const std::vector<TriangleMesh>& meshes) {

@@ -23,6 +23,13 @@ OptionParameters::OptionParameters(const nlohmann::json* scene_block, const std:
     }
 }
 
+std::string option_default_text(double value) {
+    std::string text = std::to_string(value);
+    text.erase(text.find_last_not_of('0') + 1);  // "0.300000" -> "0.3"
+    if (!text.empty() && text.back() == '.') text.pop_back();
+    return text;
+}
+
 void check_options_apply(const OptionValues& given, const std::vector<OptionDeclaration>& declarations,
                          OptionTarget target, const std::string& chosen) {
     for (const OptionDeclaration& d : declarations) {

@@ -11,16 +11,10 @@ void register_chapter05(Registry& registry) {
     auto declare = [&](const char* flag, const char* key, OptionType type, const std::string& help) {
         registry.add_option({flag, key, type, OptionTarget::Integrator, help, mlt_integrators, 5});
     };
-    auto number = [](double value) {
-        std::string text = std::to_string(value);
-        text.erase(text.find_last_not_of('0') + 1);
-        if (text.back() == '.') text.pop_back();
-        return text;
-    };
     declare("--mlt-large-step", "mlt_large_step", OptionType::Number,
-            "mlt: the probability of a large step (default " + number(defaults.large_step_probability) + ")");
+            "mlt: the probability of a large step (default " + option_default_text(defaults.large_step_probability) + ")");
     declare("--mlt-sigma", "mlt_sigma", OptionType::Number,
-            "mlt: the standard deviation of a small step in primary sample space (default " + number(defaults.sigma) + ")");
+            "mlt: the standard deviation of a small step in primary sample space (default " + option_default_text(defaults.sigma) + ")");
     declare("--mlt-bootstrap", "mlt_bootstrap", OptionType::Integer,
             "mlt: the number of bootstrap paths (default " + std::to_string(defaults.bootstrap_samples) + ")");
     declare("--mlt-chains", "mlt_chains", OptionType::Integer,

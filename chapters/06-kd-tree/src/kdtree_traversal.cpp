@@ -44,12 +44,6 @@ constexpr float DistanceMargin = 0x1p-18f;
 // the limit passes; which of them is the answer, CloseHits decides as brute force would.
 constexpr float TieLimitFactor = 1.0f + 0x1p-20f;
 
-// gamma(n) = n eps / (1 - n eps) (Higham 2002; PBR 3rd ed., eq. 3.8), as in accelerator.cpp.
-constexpr float gamma_bound(int n) {
-    constexpr float eps = std::numeric_limits<float>::epsilon() * 0.5f;
-    return (n * eps) / (1.0f - n * eps);
-}
-
 bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // A ray the traversal can follow: finite origin and direction, a direction that is not zero
@@ -58,28 +52,6 @@ bool is_traceable(const Ray& ray) {
     return is_finite(ray.origin) && is_finite(ray.direction) &&
            (ray.direction.x != 0.0f || ray.direction.y != 0.0f || ray.direction.z != 0.0f) && ray.tmax > 0.0f;
 }
-
-// The ray's range (0, tmax) within the box, by the slab test of ray_intersects_bounds (Kay and
-// Kajiya 1986; the far bound widened by 2 gamma(3), PBR 3rd ed., section 3.9.2). A zero
-// direction component gives infinite or, for an origin on the slab's face, NaN distances, which
-// the comparisons let through: the ray stays in the slab.
-bool clip_to_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds, float& t_enter,
-                    float& t_exit) {
-    float t0 = 0.0f, t1 = ray.tmax;
-    for (int axis = 0; axis < 3; ++axis) {
-        float t_near = (bounds.min[axis] - ray.origin[axis]) * inverse_direction[axis];
-        float t_far = (bounds.max[axis] - ray.origin[axis]) * inverse_direction[axis];
-        if (t_near > t_far) std::swap(t_near, t_far);
-        t_far *= 1.0f + 2.0f * gamma_bound(3);
-        t0 = t_near > t0 ? t_near : t0;
-        t1 = t_far < t1 ? t_far : t1;
-        if (t0 > t1) return false;
-    }
-    t_enter = t0;
-    t_exit = t1;
-    return true;
-}
-
 
 // BOOK(traversal-beam)
 // The beam around a ray (see BeamRadiusScale): its radius in world units, and the slack it adds to
@@ -197,7 +169,7 @@ std::optional<Hit> KdTreeAccelerator::intersect(const Ray& ray) const {
     if (tree_.nodes.empty() || !is_traceable(ray)) return std::nullopt;
     const Vec3 inverse_direction = 1.0f / ray.direction;
     float t_enter = 0.0f, t_exit = 0.0f;
-    if (!clip_to_bounds(ray, inverse_direction, tree_.bounds, t_enter, t_exit)) return std::nullopt;
+    if (!clip_ray_to_bounds(ray, inverse_direction, tree_.bounds, t_enter, t_exit)) return std::nullopt;
     const Beam beam = beam_around(ray, tree_.bounds);
     t_enter = std::max(0.0f, t_enter - beam.t_slack);
     t_exit += beam.t_slack;
@@ -228,7 +200,7 @@ bool KdTreeAccelerator::occluded(const Ray& ray) const {
     if (tree_.nodes.empty() || !is_traceable(ray)) return false;
     const Vec3 inverse_direction = 1.0f / ray.direction;
     float t_enter = 0.0f, t_exit = 0.0f;
-    if (!clip_to_bounds(ray, inverse_direction, tree_.bounds, t_enter, t_exit)) return false;
+    if (!clip_ray_to_bounds(ray, inverse_direction, tree_.bounds, t_enter, t_exit)) return false;
     const Beam beam = beam_around(ray, tree_.bounds);
     t_enter = std::max(0.0f, t_enter - beam.t_slack);
     t_exit += beam.t_slack;

@@ -23,19 +23,13 @@ void register_chapter06(Registry& registry) {
     auto declare = [&](const char* flag, const char* key, OptionType type, const std::string& help) {
         registry.add_option({flag, key, type, OptionTarget::Accelerator, help, {"kdtree"}, 6});
     };
-    auto number = [](float value) {
-        std::string text = std::to_string(value);
-        text.erase(text.find_last_not_of('0') + 1);
-        if (text.back() == '.') text.pop_back();
-        return text;
-    };
     declare("--kdtree-traversal-cost", "traversal_cost", OptionType::Number,
-            "kdtree: the SAH cost of one traversal step (default " + number(defaults.traversal_cost) + ")");
+            "kdtree: the SAH cost of one traversal step (default " + option_default_text(defaults.traversal_cost) + ")");
     declare("--kdtree-intersection-cost", "intersection_cost", OptionType::Number,
-            "kdtree: the SAH cost of one ray-triangle test (default " + number(defaults.intersection_cost) + ")");
+            "kdtree: the SAH cost of one ray-triangle test (default " + option_default_text(defaults.intersection_cost) + ")");
     declare("--kdtree-empty-bonus", "empty_bonus", OptionType::Number,
             "kdtree: the share of the cost saved by an empty child, in [0, 1) (default " +
-                number(defaults.empty_bonus) + ")");
+                option_default_text(defaults.empty_bonus) + ")");
     declare("--kdtree-max-depth", "max_depth", OptionType::Integer,
             "kdtree: the deepest node (0: 8 + 1.3 log2 N, at most 64; default 0)");
     declare("--kdtree-leaf-size", "leaf_size", OptionType::Integer,

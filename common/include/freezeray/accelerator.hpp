@@ -53,4 +53,10 @@ private:
 // Slab test: does the ray meet the box within (0, tmax)? (Kay and Kajiya 1986.)
 bool ray_intersects_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds);
 
+// The same test, also giving the part [t_enter, t_exit] of (0, tmax) inside the box, its far end
+// widened by 2 gamma(3) (PBR 3rd ed., section 3.9.2). A zero direction component gives infinite
+// or, for an origin on the slab's face, NaN distances, which the comparisons let through.
+bool clip_ray_to_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds, float& t_enter,
+                        float& t_exit);
+
 }  // namespace freezeray

@@ -59,6 +59,9 @@ private:
     Parameters parameters_;
 };
 
+// A default value as an option's help shows it: "0.3", not "0.300000".
+std::string option_default_text(double value);
+
 // Refuses (InputError at the flag) an option given on the command line whose capabilities do not
 // include `chosen` (the integrator or accelerator this run uses).
 void check_options_apply(const OptionValues& given, const std::vector<OptionDeclaration>& declarations,
