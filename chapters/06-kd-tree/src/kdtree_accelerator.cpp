@@ -15,8 +15,6 @@ void KdTreeAccelerator::build(const std::vector<TriangleMesh>& meshes) {
     meshes_ = &meshes;
     vertices_.clear();
     ids_.clear();
-    mesh_bounds_.clear();
-    for (const TriangleMesh& mesh : meshes) mesh_bounds_.push_back(mesh.bounds());
     brute_force_.build(meshes);
     // Global indices in mesh order, then triangle order: the order in which brute force tests
     // them, so "lower global index" is its tie-breaking rule.

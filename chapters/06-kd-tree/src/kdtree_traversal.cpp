@@ -189,7 +189,7 @@ std::optional<Hit> KdTreeAccelerator::intersect(const Ray& ray) const {
         return close.limit();
     });
     if (close.empty()) return std::nullopt;
-    const auto choice = close.brute_force_choice(ray, inverse_direction, shear, vertices_, ids_, mesh_bounds_);
+    const auto choice = close.brute_force_choice(ray, inverse_direction, shear, vertices_, ids_, brute_force_.mesh_bounds());
     if (!choice) return brute_force_.intersect(ray);  // its box test culled them all: its own answer
     const TriangleId& id = ids_[choice->triangle];
     return make_hit(*meshes_, id.mesh, id.triangle, choice->hit);
@@ -212,7 +212,7 @@ bool KdTreeAccelerator::occluded(const Ray& ray) const {
             const TriangleVertices& v = vertices_[triangle];
             // A hit counts, as in brute force, if the ray also meets its mesh's box.
             found = intersect_triangle(ray, shear, v.p0, v.p1, v.p2) &&
-                    ray_intersects_bounds(ray, inverse_direction, mesh_bounds_[ids_[triangle].mesh]);
+                    ray_intersects_bounds(ray, inverse_direction, brute_force_.mesh_bounds()[ids_[triangle].mesh]);
             return !found;  // the first hit answers the question
         });
         return found ? -std::numeric_limits<float>::infinity() : ray.tmax;

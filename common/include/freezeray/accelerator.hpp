@@ -45,6 +45,10 @@ public:
     std::optional<Hit> intersect(const Ray& ray) const override;
     bool occluded(const Ray& ray) const override;
 
+    // The boxes it culls meshes by, one per mesh (an accelerator that must agree with brute force
+    // to the bit replays this culling).
+    const std::vector<Bounds3>& mesh_bounds() const { return mesh_bounds_; }
+
 private:
     const std::vector<TriangleMesh>* meshes_ = nullptr;
     std::vector<Bounds3> mesh_bounds_;

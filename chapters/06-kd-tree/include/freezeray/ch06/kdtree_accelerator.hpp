@@ -39,7 +39,6 @@ private:
     const std::vector<TriangleMesh>* meshes_ = nullptr;
     std::vector<TriangleVertices> vertices_;  // per global triangle
     std::vector<TriangleId> ids_;             // per global triangle: its mesh and its index there
-    std::vector<Bounds3> mesh_bounds_;        // brute force's culling boxes (close_hits.hpp)
     BruteForceAccelerator brute_force_;       // answers the rare ray on which its culling and the tree differ
     KdTree tree_;
     KdTreeStatistics statistics_;
