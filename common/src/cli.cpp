@@ -3,6 +3,7 @@
 
 #include "commands.hpp"
 
+#include "freezeray/chapter_options_cli.hpp"
 #include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
@@ -12,7 +13,6 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <deque>
 #include <filesystem>
 #include <iostream>
 
@@ -61,53 +61,6 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     if (!scene.texture_layout.empty()) std::cout << "textures:   stored in the " << scene.texture_layout << " layout\n";
     return 0;
 }
-
-// The options the chapters declared, on one command: each stored in a slot of its type, turned
-// into OptionValues after parsing. `--help` lists them under their chapter.
-class ChapterOptions {
-public:
-    void declare(CLI::App& command, const std::vector<OptionDeclaration>& declarations) {
-        for (const OptionDeclaration& d : declarations) {
-            Slot& slot = slots_.emplace_back();
-            slot.declaration = &d;
-            const std::string group = "Options of chapter " + two_digit(d.chapter);
-            switch (d.type) {
-                case OptionType::Number: slot.option = command.add_option(d.flag, slot.number, d.help); break;
-                case OptionType::Integer: slot.option = command.add_option(d.flag, slot.integer, d.help); break;
-                case OptionType::Text: slot.option = command.add_option(d.flag, slot.text, d.help); break;
-                case OptionType::Flag: slot.option = command.add_flag(d.flag, slot.flag, d.help); break;
-            }
-            slot.option->group(group);
-        }
-    }
-
-    OptionValues values() const {
-        OptionValues values;
-        for (const Slot& slot : slots_) {
-            if (slot.option->count() == 0) continue;
-            const OptionDeclaration& d = *slot.declaration;
-            switch (d.type) {
-                case OptionType::Number: values.values[d.key] = slot.number; break;
-                case OptionType::Integer: values.values[d.key] = slot.integer; break;
-                case OptionType::Text: values.values[d.key] = slot.text; break;
-                case OptionType::Flag: values.values[d.key] = slot.flag; break;
-            }
-            values.flags[d.key] = d.flag;
-        }
-        return values;
-    }
-
-private:
-    struct Slot {
-        const OptionDeclaration* declaration = nullptr;
-        CLI::Option* option = nullptr;
-        double number = 0.0;
-        long long integer = 0;
-        std::string text;
-        bool flag = false;
-    };
-    std::deque<Slot> slots_;  // a deque: CLI11 keeps pointers to the slots' values
-};
 
 // Parses "x,y,width,height".
 CropRegion parse_crop(const std::string& text) {

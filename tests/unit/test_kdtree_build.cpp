@@ -152,6 +152,27 @@ TEST_CASE("kdtree: two builds of a scene give identical trees", "[unit][kdtree]"
     CHECK(first.tree().leaf_triangles == second.tree().leaf_triangles);
 }
 
+TEST_CASE("kdtree: a build on several threads gives the tree of a build on one", "[unit][kdtree]") {
+    // Subtrees built on their own threads are joined in depth-first order with their indices
+    // moved: any slip in that (a child index, a leaf list's offset) changes the arrays.
+    const std::vector<TriangleMesh> meshes{random_soup(3000, 0.1f, 41), icosphere(3, 0.4f, Vec3(0.5f)), planar_grid(8, 0.5f)};
+    ch06::KdTreeSettings one_thread, many_threads;
+    one_thread.build_threads = 1;
+    many_threads.build_threads = 2;  // the top 3 levels split over threads: 8 subtrees at once
+    KdTreeAccelerator serial(one_thread), parallel(many_threads);
+    serial.build(meshes);
+    parallel.build(meshes);
+    CHECK(serial.statistics().build_threads == 1);
+    CHECK(parallel.statistics().build_threads == 8);
+    REQUIRE(serial.tree().nodes.size() > 1000);
+    CHECK(serial.tree().nodes == parallel.tree().nodes);
+    CHECK(serial.tree().leaf_triangles == parallel.tree().leaf_triangles);
+    CHECK(serial.statistics().leaves == parallel.statistics().leaves);
+    CHECK(serial.statistics().triangle_references == parallel.statistics().triangle_references);
+    CHECK(serial.statistics().max_depth == parallel.statistics().max_depth);
+    CHECK(serial.statistics().mean_leaf_depth == Approx(parallel.statistics().mean_leaf_depth));
+}
+
 TEST_CASE("kdtree: rays with NaN, infinite or zero components hit nothing and end", "[unit][kdtree]") {
     const std::vector<TriangleMesh> meshes{icosphere(2), planar_grid(4, 0.0f)};
     KdTreeAccelerator tree;
@@ -262,7 +283,8 @@ TEST_CASE("kdtree: the statistics describe the tree", "[unit][kdtree]") {
 
 TEST_CASE("kdtree: settings from a JSON object, with errors that name the place", "[unit][kdtree]") {
     const nlohmann::json json = {{"traversal_cost", 1.0}, {"intersection_cost", 80.0}, {"empty_bonus", 0.5},
-                                 {"max_depth", 40}, {"leaf_size", 1}, {"max_unproductive_refinements", 3}};
+                                 {"max_depth", 40}, {"leaf_size", 1}, {"max_unproductive_refinements", 3},
+                                 {"build_threads", 2}};
     const ch06::KdTreeSettings s = ch06::read_kdtree_settings(Parameters(json, "scene.json", "/accelerator", "."));
     CHECK(s.traversal_cost == 1.0f);
     CHECK(s.intersection_cost == 80.0f);
@@ -270,12 +292,14 @@ TEST_CASE("kdtree: settings from a JSON object, with errors that name the place"
     CHECK(s.max_depth == 40);
     CHECK(s.leaf_size == 1);
     CHECK(s.max_unproductive_refinements == 3);
+    CHECK(s.build_threads == 2);
     const nlohmann::json empty = nlohmann::json::object();
     const ch06::KdTreeSettings d = ch06::read_kdtree_settings(Parameters(empty, "scene.json", "/accelerator", "."));
     CHECK(d.traversal_cost == ch06::KdTreeSettings{}.traversal_cost);
     CHECK(d.max_depth == 0);
     for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
-             {"traversal_cost", 0.0}, {"empty_bonus", 1.0}, {"max_depth", 65}, {"leaf_size", -1}, {"max_depth", 2.5}}) {
+             {"traversal_cost", 0.0}, {"empty_bonus", 1.0}, {"max_depth", 65}, {"leaf_size", -1}, {"max_depth", 2.5},
+             {"build_threads", -1}}) {
         const nlohmann::json bad = {{key, value}};
         INFO(key << " = " << value);
         try {

@@ -18,8 +18,11 @@ BuiltAccelerator build_timed(std::string name, std::unique_ptr<Accelerator> acce
 }
 
 BuiltAccelerator build_registry_accelerator(const Registry& registry, const std::string& name,
-                                            const std::vector<TriangleMesh>& meshes) {
-    return build_timed(name, registry.make_accelerator(name, "--accel"), meshes);
+                                            const Parameters& settings, const std::vector<TriangleMesh>& meshes) {
+    BuiltAccelerator built = build_timed(name, registry.make_accelerator(name, "--accel", &settings), meshes);
+    if (const std::optional<std::size_t> bytes = built.accelerator->memory_bytes())
+        built.memory_bytes = static_cast<double>(*bytes);
+    return built;
 }
 
 }  // namespace freezeray::benchmark

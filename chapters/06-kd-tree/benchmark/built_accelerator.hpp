@@ -23,10 +23,10 @@ struct BuiltAccelerator {
 BuiltAccelerator build_timed(std::string name, std::unique_ptr<Accelerator> accelerator,
                              const std::vector<TriangleMesh>& meshes);
 
-// Makes the registry's accelerator `name` and builds it, timed. An unknown name is an
-// InputError at "--accel" that names the chapter introducing it. The Accelerator interface
-// reports no memory use (yet), so memory_bytes stays empty.
+// Makes the registry's accelerator `name` with its `settings` (the keys of a scene's
+// "accelerator" block) and builds it, timed, with the memory it reports. An unknown name is an
+// InputError at "--accel" that names the chapter introducing it.
 BuiltAccelerator build_registry_accelerator(const Registry& registry, const std::string& name,
-                                            const std::vector<TriangleMesh>& meshes);
+                                            const Parameters& settings, const std::vector<TriangleMesh>& meshes);
 
 }  // namespace freezeray::benchmark

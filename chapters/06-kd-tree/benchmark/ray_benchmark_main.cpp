@@ -10,12 +10,15 @@
 #include "ray_batch_generator.hpp"
 #include "throughput.hpp"
 
+#include "freezeray/chapter_options_cli.hpp"
 #include "freezeray/error.hpp"
+#include "freezeray/options.hpp"
 
 #include "freezeray/complete_renderer.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -43,6 +46,7 @@ struct Options {
     std::string resolution;  // "W" or "WxH"
     std::uint64_t seed = 1;
     std::size_t limit = std::numeric_limits<std::size_t>::max();
+    OptionValues accelerator_options;  // the chapters' accelerator settings (--kdtree-...)
 };
 
 // Parses "ex,ey,ez,lx,ly,lz,fov" into the camera (up stays +y).
@@ -84,14 +88,30 @@ std::ostream& notes(const Options& options) { return options.json ? std::cerr : 
 const std::string EmbreeName = "embree";
 
 // Builds the accelerator called `name`: Embree, or one of the registry's.
-BuiltAccelerator build_named(const std::string& name, const Registry& registry,
+BuiltAccelerator build_named(const std::string& name, const Registry& registry, const Parameters& settings,
                              const std::vector<TriangleMesh>& meshes) {
     if (name == EmbreeName) return *build_embree(meshes);
-    return build_registry_accelerator(registry, name, meshes);
+    return build_registry_accelerator(registry, name, settings, meshes);
 }
 
-RayBatches make_batches(const Options& options, const Registry& registry, const std::vector<TriangleMesh>& meshes,
-                        const std::string& generating_accelerator) {
+// Refuses an accelerator setting that none of the measured accelerators reads (a setting of
+// kdtree given with --accel bruteforce would otherwise be silently dropped).
+void check_settings_apply(const Options& options, const Registry& registry, const std::vector<std::string>& accelerators) {
+    for (const OptionDeclaration& d : registry.options()) {
+        if (d.target != OptionTarget::Accelerator || !options.accelerator_options.values.contains(d.key)) continue;
+        const bool read = std::any_of(accelerators.begin(), accelerators.end(), [&](const std::string& name) {
+            return std::find(d.used_by.begin(), d.used_by.end(), name) != d.used_by.end();
+        });
+        if (!read) {
+            std::string users;
+            for (const std::string& u : d.used_by) users += (users.empty() ? "" : ", ") + u;
+            throw InputError(d.flag, "is a setting of " + users + ", and none of them is measured (--accel)");
+        }
+    }
+}
+
+RayBatches make_batches(const Options& options, const Registry& registry, const Parameters& accelerator_settings,
+                        const std::vector<TriangleMesh>& meshes, const std::string& generating_accelerator) {
     if (!options.rays.empty()) {
         RayBatches batches = read_ray_batches(options.rays);
         batches.keep_first(options.limit);
@@ -103,7 +123,7 @@ RayBatches make_batches(const Options& options, const Registry& registry, const 
     if (!options.resolution.empty()) parse_resolution(options.resolution, settings.camera);
     settings.seed = options.seed;
     settings.limit = options.limit;
-    const BuiltAccelerator built = build_named(generating_accelerator, registry, meshes);
+    const BuiltAccelerator built = build_named(generating_accelerator, registry, accelerator_settings, meshes);
     RayBatches batches = generate_ray_batches(*built.accelerator, meshes.front().bounds(), settings);
     if (batches.of(RayKind::Diffuse).empty())
         throw InputError("--camera", "none of the primary rays hits the mesh; give a --camera that sees it");
@@ -172,10 +192,13 @@ int run(const Options& options, const Registry& registry) {
     std::vector<std::string> accelerators = options.accelerators;
     if (accelerators.empty())
         for (const Registry::Entry& entry : registry.list(CapabilityKind::Accelerator)) accelerators.push_back(entry.name);
-    // Unknown names are refused now, before minutes of loading and tracing.
+    // Unknown names and settings out of range are refused now, before minutes of loading and tracing.
+    check_settings_apply(options, registry, accelerators);
+    const OptionParameters settings(nullptr, "", "", ".", options.accelerator_options, registry.options(),
+                                    OptionTarget::Accelerator);
     for (const std::string& name : accelerators) {
         if (name != EmbreeName)
-            registry.make_accelerator(name, "--accel");
+            registry.make_accelerator(name, "--accel", &settings.parameters());
         else if (!embree_is_available())
             throw InputError("--accel", "'embree': this ray-benchmark was built without Embree 3 (libembree-dev)");
     }
@@ -184,7 +207,7 @@ int run(const Options& options, const Registry& registry) {
     notes(options) << "mesh: " << options.mesh << ", " << meshes.front().triangle_count() << " triangles, "
                    << meshes.front().positions.size() << " vertices\n";
 
-    const RayBatches batches = make_batches(options, registry, meshes, accelerators.front());
+    const RayBatches batches = make_batches(options, registry, settings.parameters(), meshes, accelerators.front());
     notes(options) << "batches: " << batches.of(RayKind::Primary).size() << " primary, "
                    << batches.of(RayKind::Diffuse).size() << " diffuse, " << batches.of(RayKind::Shadow).size()
                    << " shadow rays"
@@ -216,7 +239,7 @@ int run(const Options& options, const Registry& registry) {
     std::set<std::string> done{EmbreeName};
     for (const std::string& name : accelerators) {
         if (!done.insert(name).second) continue;  // Embree, or a name given twice
-        const BuiltAccelerator built = build_registry_accelerator(registry, name, meshes);
+        const BuiltAccelerator built = build_registry_accelerator(registry, name, settings.parameters(), meshes);
         std::map<RayKind, RayAnswers> measured = measure_accelerator(built, batches, options, reference);
         // Only the first accelerator's answers are kept (for --hits-out); the others' are done with.
         if (name == accelerators.front()) answers[name] = std::move(measured);
@@ -261,9 +284,12 @@ int main(int argc, char** argv) {
         ->excludes(rays);
     app.add_option("--seed", options.seed, "random seed of the diffuse and shadow rays (default: 1)")->excludes(rays);
     app.add_option("--limit", options.limit, "trace only the first N rays of each kind");
+    ChapterOptions accelerator_settings;  // each accelerator's own settings, as the renderer offers them
+    accelerator_settings.declare(app, registry.options(), OptionTarget::Accelerator);
 
     try {
         app.parse(argc, argv);
+        options.accelerator_options = accelerator_settings.values();
     } catch (const CLI::ParseError& error) {
         const int status = app.exit(error);
         return status == 0 ? 0 : 1;  // --help is a success; every mistake is exit status 1

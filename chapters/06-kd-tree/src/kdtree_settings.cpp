@@ -50,6 +50,7 @@ KdTreeSettings read_kdtree_settings(const Parameters& parameters) {
     s.leaf_size = read_int(parameters, "leaf_size", s.leaf_size, 0, std::numeric_limits<int>::max());
     s.max_unproductive_refinements =
         read_int(parameters, "max_unproductive_refinements", s.max_unproductive_refinements, 0, TraversalStackSize);
+    s.build_threads = read_int(parameters, "build_threads", s.build_threads, 0, 256);
     return s;
 }
 

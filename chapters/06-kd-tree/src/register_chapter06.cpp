@@ -35,6 +35,8 @@ void register_chapter06(Registry& registry) {
     declare("--kdtree-leaf-size", "leaf_size", OptionType::Integer,
             "kdtree: nodes with at most this many triangles become leaves untried (default " +
                 std::to_string(defaults.leaf_size) + ")");
+    declare("--kdtree-build-threads", "build_threads", OptionType::Integer,
+            "kdtree: threads the build may use (0: one per core; the tree is the same for any; default 0)");
 }
 
 }  // namespace freezeray

@@ -6,6 +6,7 @@
 #include "freezeray/mesh.hpp"
 #include "freezeray/ray.hpp"
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,6 +30,10 @@ public:
     // What the accelerator built, as (name, value) lines for `info` and `render` to print
     // (sizes, build time); none by default.
     virtual std::vector<std::pair<std::string, std::string>> describe() const { return {}; }
+
+    // The bytes of what build() made beyond the meshes themselves, when the accelerator counts
+    // them (the ray benchmark's memory column); nothing by default.
+    virtual std::optional<std::size_t> memory_bytes() const { return std::nullopt; }
 };
 
 // Fills in a Hit from a triangle, its barycentrics and the ray distance: interpolated position
@@ -48,6 +53,8 @@ public:
     // The boxes it culls meshes by, one per mesh (an accelerator that must agree with brute force
     // to the bit replays this culling).
     const std::vector<Bounds3>& mesh_bounds() const { return mesh_bounds_; }
+
+    std::optional<std::size_t> memory_bytes() const override { return mesh_bounds_.size() * sizeof(Bounds3); }
 
 private:
     const std::vector<TriangleMesh>* meshes_ = nullptr;

@@ -29,6 +29,8 @@ public:
     bool occluded(const Ray& ray) const override;
 
     std::vector<std::pair<std::string, std::string>> describe() const override;
+    // The nodes, the leaves' lists and the triangle copies (KdTreeStatistics::memory_bytes).
+    std::optional<std::size_t> memory_bytes() const override { return statistics_.memory_bytes; }
 
     const KdTreeSettings& settings() const { return settings_; }
     const KdTreeStatistics& statistics() const { return statistics_; }

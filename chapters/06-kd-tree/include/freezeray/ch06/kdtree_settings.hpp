@@ -33,6 +33,8 @@ struct KdTreeSettings {
     // such splits lie above the node (pbrt-v3's badRefines allow 2): a first split that does not
     // pay may let its children's splits pay.
     int max_unproductive_refinements = 2;
+    // Threads the build may use; 0: one per core. The tree does not depend on it.
+    int build_threads = 0;
 };
 
 // The maximum depth the build uses for n triangles: the setting, or the automatic one, never
@@ -41,7 +43,7 @@ int effective_max_depth(const KdTreeSettings& settings, std::size_t triangle_cou
 
 // Reads the settings from a JSON object (missing keys keep their defaults): traversal_cost,
 // intersection_cost (both > 0), empty_bonus (in [0, 1)), max_depth (0 to 64), leaf_size (>= 0),
-// max_unproductive_refinements (>= 0). Errors name the JSON path.
+// max_unproductive_refinements (>= 0), build_threads (0 to 256). Errors name the JSON path.
 KdTreeSettings read_kdtree_settings(const Parameters& parameters);
 
 }  // namespace freezeray::ch06
