@@ -5,7 +5,6 @@
 #include "freezeray/ch06/clip_triangle.hpp"
 
 #include <algorithm>
-#include <iterator>
 
 namespace freezeray::ch06 {
 
@@ -62,6 +61,20 @@ Bounds3 box_within(const TriangleVertices& t, const Bounds3& child_cell) {
     return box ? *box : child_cell;
 }
 
+// Merges the sorted `cut` into the sorted `kept`, in linear time (Wald and Havran 2006, section
+// 4.3) and in place: from the back, so that no event is overwritten before it has moved.
+void merge_sorted_into(std::vector<SplitEvent>& kept, const std::vector<SplitEvent>& cut) {
+    if (cut.empty()) return;
+    std::size_t from_kept = kept.size(), from_cut = cut.size();
+    kept.resize(kept.size() + cut.size());
+    for (std::size_t to = kept.size(); from_cut > 0;) {
+        if (from_kept > 0 && cut[from_cut - 1] < kept[from_kept - 1])
+            kept[--to] = kept[--from_kept];
+        else
+            kept[--to] = cut[--from_cut];
+    }
+}
+
 }  // namespace
 
 ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, const Bounds3& cell,
@@ -69,15 +82,7 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
     const auto& axis_events = events[static_cast<std::size_t>(plane.axis)];
     classify_triangles(axis_events, plane, sides);
 
-    // Triangles on one side keep their events, in order.
     ChildEvents children;
-    for (std::size_t axis = 0; axis < 3; ++axis) {
-        for (const SplitEvent& e : events[axis]) {
-            const Side side = sides[e.triangle];
-            if (side == Side::Below) children.below[axis].push_back(e);
-            else if (side == Side::Above) children.above[axis].push_back(e);
-        }
-    }
     for (const SplitEvent& e : axis_events) {
         if (e.type == EventType::End) continue;  // count each triangle once
         const Side side = sides[e.triangle];
@@ -103,17 +108,26 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
     sort_events(cut_above);
     // END BOOK
 
-    // Merging two sorted lists is linear (section 4.3).
-    auto merge_into = [](std::vector<SplitEvent>& kept, const std::vector<SplitEvent>& cut) {
-        if (cut.empty()) return;
-        std::vector<SplitEvent> merged;
-        merged.reserve(kept.size() + cut.size());
-        std::merge(kept.begin(), kept.end(), cut.begin(), cut.end(), std::back_inserter(merged));
-        kept = std::move(merged);
-    };
     for (std::size_t axis = 0; axis < 3; ++axis) {
-        merge_into(children.below[axis], cut_below[axis]);
-        merge_into(children.above[axis], cut_above[axis]);
+        // Triangles on one side keep their events, in order (each list reserved at its final
+        // size: the kept events counted first, and the cut ones known).
+        std::size_t kept_below = 0, kept_above = 0;
+        for (const SplitEvent& e : events[axis]) {
+            const Side side = sides[e.triangle];
+            kept_below += side == Side::Below;
+            kept_above += side == Side::Above;
+        }
+        auto& below = children.below[axis];
+        auto& above = children.above[axis];
+        below.reserve(kept_below + cut_below[axis].size());
+        above.reserve(kept_above + cut_above[axis].size());
+        for (const SplitEvent& e : events[axis]) {
+            const Side side = sides[e.triangle];
+            if (side == Side::Below) below.push_back(e);
+            else if (side == Side::Above) above.push_back(e);
+        }
+        merge_sorted_into(below, cut_below[axis]);
+        merge_sorted_into(above, cut_above[axis]);
     }
     return children;
 }
