@@ -35,6 +35,7 @@ const std::vector<CatalogueEntry>& course_catalogue() {
         {CapabilityKind::Integrator, "mlt", 5},
         {CapabilityKind::Integrator, "mlt-multiplexed", 5},
         {CapabilityKind::Accelerator, "kdtree", 6},
+        {CapabilityKind::Integrator, "traversal-cost", 6},
         {CapabilityKind::Accelerator, "kdtree-simd", 7},
         {CapabilityKind::TextureLayout, "tiled", 8},
     };

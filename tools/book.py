@@ -23,9 +23,12 @@ gives the answer away. Nested BOOK regions are allowed; their marker lines are l
 
 Figures. book/figures.json lists {"output": ..., "command": [...]} entries. Each command
 runs from the repository root; its first word is an executable of the build
-(BUILD_DIR/NAME or BUILD_DIR/chapters/NAME) and "{output}" stands for the output path.
+(BUILD_DIR/NAME or BUILD_DIR/chapters/NAME) or a Python script of the repository (a path
+ending in .py, run with this Python), "{output}" stands for the output path and
+"{build_dir}" for BUILD_DIR.
 An entry may add "copy_from": a file the command writes (under out/, say, beside files
-too large to commit) that is then copied to the output.
+too large to commit) that is then copied to the output, and "needs": the build targets a
+script runs (the book-figures target builds them first).
 """
 
 from __future__ import annotations
@@ -340,6 +343,7 @@ class Figure:
     command: list[str]
     description: str = ""
     copy_from: str = ""
+    needs: tuple[str, ...] = ()
 
 
 def load_figures(root: Path) -> list[Figure]:
@@ -356,8 +360,12 @@ def load_figures(root: Path) -> list[Figure]:
     figures, problems = [], []
     for index, entry in enumerate(entries):
         where = f"{FIGURES_FILE}: entry {index}"
-        if not isinstance(entry, dict) or set(entry) - {"output", "command", "description", "copy_from"}:
-            problems.append(f"{where}: expected only the keys output, command, description and copy_from")
+        if not isinstance(entry, dict) or set(entry) - {"output", "command", "description", "copy_from", "needs"}:
+            problems.append(f"{where}: expected only the keys output, command, description, copy_from and needs")
+            continue
+        needs = entry.get("needs", [])
+        if not (isinstance(needs, list) and all(isinstance(word, str) and word for word in needs)):
+            problems.append(f"{where}: needs must be a list of build target names")
             continue
         copy_from = entry.get("copy_from", "")
         if not isinstance(copy_from, str) or Path(copy_from).is_absolute():
@@ -369,7 +377,7 @@ def load_figures(root: Path) -> list[Figure]:
         elif not (isinstance(command, list) and command and all(isinstance(word, str) for word in command)):
             problems.append(f"{where} ({output}): command must be a non-empty list of strings")
         else:
-            figures.append(Figure(output, command, entry.get("description", ""), copy_from))
+            figures.append(Figure(output, command, entry.get("description", ""), copy_from, tuple(needs)))
     if problems:
         raise BookError(problems)
     return figures
@@ -385,11 +393,18 @@ def find_executable(build_dir: Path, name: str) -> Path | None:
 
 def render_figure(root: Path, build_dir: Path, figure: Figure, dry_run: bool) -> str | None:
     """Run one figure's command; returns a problem, or None when the figure was made."""
-    executable = find_executable(build_dir, figure.command[0])
-    if executable is None:
-        return (f"{figure.output}: {figure.command[0]} is not built in {build_dir} or {build_dir}/chapters "
-                f"(cmake --build {build_dir} --target {figure.command[0]})")
-    command = [str(executable)] + [word.replace("{output}", figure.output) for word in figure.command[1:]]
+    if figure.command[0].endswith(".py"):
+        if not (root / figure.command[0]).is_file():
+            return f"{figure.output}: the script {figure.command[0]} does not exist"
+        program = [sys.executable, figure.command[0]]
+    else:
+        executable = find_executable(build_dir, figure.command[0])
+        if executable is None:
+            return (f"{figure.output}: {figure.command[0]} is not built in {build_dir} or {build_dir}/chapters "
+                    f"(cmake --build {build_dir} --target {figure.command[0]})")
+        program = [str(executable)]
+    command = program + [word.replace("{output}", figure.output).replace("{build_dir}", str(build_dir))
+                         for word in figure.command[1:]]
     print(f"{figure.output}: {' '.join(command)}", flush=True)
     if dry_run:
         return None

@@ -1,5 +1,5 @@
 // Viridis false-colour maps of per-pixel relative error (see false_colour.hpp).
-#include "false_colour.hpp"
+#include "freezeray/false_colour.hpp"
 
 #include "freezeray/metrics.hpp"
 
@@ -143,12 +143,16 @@ double pixel_relative_error(const Spectrum& pixel, const Spectrum& reference) {
     return sum / 3.0;
 }
 
+Spectrum viridis_linear(double t) {
+    const Spectrum encoded = viridis_srgb(t);
+    return Spectrum(srgb_to_linear(encoded.r), srgb_to_linear(encoded.g), srgb_to_linear(encoded.b));
+}
+
 namespace {
 
 // The linear RGB whose sRGB encoding is the viridis colour for `relative_error`.
 Spectrum false_colour(double relative_error) {
-    const Spectrum encoded = viridis_srgb(false_colour_position(relative_error));
-    return Spectrum(srgb_to_linear(encoded.r), srgb_to_linear(encoded.g), srgb_to_linear(encoded.b));
+    return viridis_linear(false_colour_position(relative_error));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "freezeray/registry.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 namespace freezeray {
@@ -124,13 +125,24 @@ Spectrum Parameters::get_spectrum(const std::string& key, const Spectrum& fallba
     return get_vec3(key, fallback);
 }
 
+std::string shared_scenes_folder() {
+    if (const char* folder = std::getenv("FREEZERAY_SHARED_SCENES"); folder != nullptr && *folder != '\0') return folder;
+    return FREEZERAY_DEFAULT_SHARED_SCENES;
+}
+
 std::string Parameters::require_existing_file(const std::string& key) const {
     const std::string name = require_string(key);
-    std::filesystem::path path(name);
+    static const std::string shared_prefix = "$FREEZERAY_SHARED_SCENES/";
+    const bool shared = name.starts_with(shared_prefix);
+    std::filesystem::path path = shared ? std::filesystem::path(shared_scenes_folder()) / name.substr(shared_prefix.size())
+                                        : std::filesystem::path(name);
     if (path.is_relative()) path = std::filesystem::path(base_directory_) / path;
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
-        throw InputError(where(key), "file '" + path.lexically_normal().string() + "' does not exist");
+        throw InputError(where(key), "file '" + path.lexically_normal().string() + "' does not exist" +
+                                         (shared ? " (in the shared scenes folder: $FREEZERAY_SHARED_SCENES, or " +
+                                                       std::string(FREEZERAY_DEFAULT_SHARED_SCENES) + " when it is unset)"
+                                                 : ""));
     return path.lexically_normal().string();
 }
 

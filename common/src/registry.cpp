@@ -116,6 +116,7 @@ bool Registry::has(CapabilityKind kind, const std::string& name) const {
         case CapabilityKind::Light: return lights_.count(name) > 0 || (name == "area" && area_light_.has_value());
         case CapabilityKind::TextureLayout: return texture_layouts_.count(name) > 0;
     }
+    return false;  // not reached: every kind is handled above
 }
 
 void Registry::require(CapabilityKind kind, const std::string& name, const std::string& where) const {

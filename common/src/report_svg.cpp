@@ -2,7 +2,7 @@
 // a few rectangles, lines and texts do not need a plotting library (see report_svg.hpp).
 #include "report_svg.hpp"
 
-#include "false_colour.hpp"
+#include "freezeray/false_colour.hpp"
 #include "report_content.hpp"
 
 #include <algorithm>

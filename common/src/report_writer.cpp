@@ -4,7 +4,7 @@
 #include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
-#include "false_colour.hpp"
+#include "freezeray/false_colour.hpp"
 #include "report_content.hpp"
 #include "report_svg.hpp"
 

@@ -209,6 +209,24 @@ class BookTool(unittest.TestCase):
         self.assertEqual(status, 0, output)
         self.assertEqual((self.root / "book/figures/b.png").read_text(), "image render --out out/big/b.png")
 
+    def test_a_figure_made_by_a_script_of_the_repository(self):
+        (self.root / "build").mkdir()
+        self.write("tools/plot.py", textwrap.dedent("""\
+            import sys
+            from pathlib import Path
+            out = Path(sys.argv[sys.argv.index("--out") + 1])
+            out.parent.mkdir(parents=True, exist_ok=True)
+            out.write_text("plot " + " ".join(sys.argv[1:]))
+            """))
+        self.write("book/figures.json", json.dumps([
+            {"output": "book/figures/p.svg", "command": ["tools/plot.py", "--build-dir", "{build_dir}", "--out", "{output}"],
+             "needs": ["ray-benchmark"]},
+        ]))
+        status, output, errors = self.run_tool("figures", "--build-dir", str(self.root / "build"))
+        self.assertEqual(status, 0, errors)
+        self.assertEqual((self.root / "book/figures/p.svg").read_text(),
+                         f"plot --build-dir {self.root / 'build'} --out book/figures/p.svg")
+
     def test_figures_with_a_missing_renderer(self):
         (self.root / "build").mkdir()
         self.write("book/figures.json", json.dumps([{"output": "book/figures/a.png", "command": ["ch09"]}]))

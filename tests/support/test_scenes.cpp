@@ -3,6 +3,7 @@
 
 #include "freezeray/complete_renderer.hpp"
 #include "freezeray/error.hpp"
+#include "freezeray/parameters.hpp"
 #include "freezeray/progress.hpp"
 
 #include <atomic>
@@ -24,8 +25,7 @@ std::string test_data_path(const std::string& relative) {
 }
 
 std::optional<std::string> shared_scenes_folder() {
-    std::string folder = std::string(FREEZERAY_SOURCE_DIR) + "/../shared/scenes";
-    if (const char* env = std::getenv("FREEZERAY_SHARED_SCENES")) folder = env;
+    const std::string folder = freezeray::shared_scenes_folder();  // the one the scene files' names use
     std::error_code error;
     if (std::filesystem::is_directory(folder, error)) return folder;
     return std::nullopt;

@@ -155,15 +155,16 @@ TEST_CASE("kdtree: two builds of a scene give identical trees", "[unit][kdtree]"
 TEST_CASE("kdtree: a build on several threads gives the tree of a build on one", "[unit][kdtree]") {
     // Subtrees built on their own threads are joined in depth-first order with their indices
     // moved: any slip in that (a child index, a leaf list's offset) changes the arrays.
-    const std::vector<TriangleMesh> meshes{random_soup(3000, 0.1f, 41), icosphere(3, 0.4f, Vec3(0.5f)), planar_grid(8, 0.5f)};
+    const std::vector<TriangleMesh> meshes{random_soup(30000, 0.02f, 41), icosphere(3, 0.4f, Vec3(0.5f)), planar_grid(8, 0.5f)};
     ch06::KdTreeSettings one_thread, many_threads;
     one_thread.build_threads = 1;
-    many_threads.build_threads = 2;  // the top 3 levels split over threads: 8 subtrees at once
+    many_threads.build_threads = 2;  // the top 3 levels split over threads: up to 8 subtrees at once
     KdTreeAccelerator serial(one_thread), parallel(many_threads);
     serial.build(meshes);
     parallel.build(meshes);
     CHECK(serial.statistics().build_threads == 1);
-    CHECK(parallel.statistics().build_threads == 8);
+    CHECK(parallel.statistics().build_threads > 2);  // more than the root's split: nodes of depth 1 too
+    CHECK(parallel.statistics().build_threads <= 8);
     REQUIRE(serial.tree().nodes.size() > 1000);
     CHECK(serial.tree().nodes == parallel.tree().nodes);
     CHECK(serial.tree().leaf_triangles == parallel.tree().leaf_triangles);
@@ -171,6 +172,39 @@ TEST_CASE("kdtree: a build on several threads gives the tree of a build on one",
     CHECK(serial.statistics().triangle_references == parallel.statistics().triangle_references);
     CHECK(serial.statistics().max_depth == parallel.statistics().max_depth);
     CHECK(serial.statistics().mean_leaf_depth == Approx(parallel.statistics().mean_leaf_depth));
+}
+
+TEST_CASE("kdtree: the traversal's counts of its work", "[unit][kdtree]") {
+    // One triangle: the root is a leaf; a ray that meets the bounds visits it and tests the
+    // triangle once, a ray that misses the bounds visits nothing.
+    const std::vector<TriangleMesh> one{make_mesh({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {{0, 1, 2}})};
+    KdTreeAccelerator single;
+    single.build(one);
+    const ch06::TraversalCounts hit = single.count_traversal(Ray{Vec3(0.2f, 0.2f, 1), Vec3(0, 0, -1)});
+    CHECK(hit.interior_nodes == 0);
+    CHECK(hit.leaves == 1);
+    CHECK(hit.triangle_tests == 1);
+    const ch06::TraversalCounts miss = single.count_traversal(Ray{Vec3(5, 5, 1), Vec3(0, 0, -1)});
+    CHECK(miss.interior_nodes + miss.leaves + miss.triangle_tests == 0);
+    // A soup: every ray that hits tested at least its triangle; a walk of more than one leaf
+    // passes interior nodes; the answers are intersect's.
+    const std::vector<TriangleMesh> soup{random_soup(2000, 0.05f, 42)};
+    KdTreeAccelerator tree;
+    tree.build(soup);
+    PCG32 random(43, 43);
+    int hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 origin(random.next_float() * 2 - 0.5f, random.next_float() * 2 - 0.5f, -1.0f);
+        const Ray ray{origin, glm::normalize(Vec3(random.next_float() - 0.5f, random.next_float() - 0.5f, 1.0f))};
+        const ch06::TraversalCounts counts = tree.count_traversal(ray);
+        if (tree.intersect(ray)) {
+            ++hits;
+            CHECK(counts.triangle_tests >= 1);
+            CHECK(counts.leaves >= 1);
+        }
+        if (counts.leaves > 1) CHECK(counts.interior_nodes >= 1);
+    }
+    CHECK(hits > 100);
 }
 
 TEST_CASE("kdtree: rays with NaN, infinite or zero components hit nothing and end", "[unit][kdtree]") {

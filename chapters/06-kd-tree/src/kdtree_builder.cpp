@@ -9,6 +9,7 @@
 #include "freezeray/ch06/surface_area_heuristic.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <future>
 #include <stdexcept>
@@ -82,11 +83,11 @@ public:
         depth_limit_ = effective_max_depth(settings_, count);
         statistics_.depth_limit = depth_limit_;
         parallel_depth_ = parallel_depth(settings_.build_threads);
-        statistics_.build_threads = parallel_depth_ > 0 ? (1 << parallel_depth_) : 1;
 
         Subtree tree;
         std::vector<Side> sides(triangles_.size(), Side::Both);
         build_node(std::move(events), count, bounds, 0, 0, tree, sides);
+        statistics_.build_threads = threads_used_.load();
 
         tree_.nodes = std::move(tree.nodes);
         tree_.leaf_triangles = std::move(tree.leaf_triangles);
@@ -102,6 +103,9 @@ public:
     }
 
 private:
+    // A node this small is built on its own thread: starting a thread would cost more than it saves.
+    static constexpr std::size_t MinimumParallelTriangles = 4096;
+
     // Nodes above this depth build their below subtree on a thread of its own: 2^depth subtrees
     // share the cores, a few per core, so that an unbalanced split leaves no core idle for long.
     static int parallel_depth(int build_threads) {
@@ -145,7 +149,7 @@ private:
         // subtree is written (pbrt-v3, section 4.4.1).
         const std::size_t index = out.nodes.size();
         out.nodes.push_back(KdTreeNode::interior(plane.axis, plane.position, 0));
-        if (depth < parallel_depth_) {
+        if (depth < parallel_depth_ && count >= MinimumParallelTriangles) {
             build_children_in_parallel(children, below_cell, above_cell, depth, unproductive, out, index, sides);
             return;
         }
@@ -161,6 +165,7 @@ private:
     void build_children_in_parallel(ChildEvents& children, const Bounds3& below_cell, const Bounds3& above_cell,
                                     int depth, int unproductive, Subtree& out, std::size_t index,
                                     std::vector<Side>& sides) {
+        ++threads_used_;
         auto below = std::async(std::launch::async, [&, events = std::move(children.below)]() mutable {
             Subtree subtree;
             std::vector<Side> own_sides(triangles_.size(), Side::Both);
@@ -197,6 +202,7 @@ private:
     KdTree& tree_;
     int depth_limit_ = 1;
     int parallel_depth_ = 0;
+    std::atomic<int> threads_used_{1};
 };
 
 }  // namespace

@@ -17,8 +17,8 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
 
 std::vector<std::pair<std::string, std::string>> KdTreeStatistics::describe() const {
     std::vector<std::pair<std::string, std::string>> lines;
-    lines.emplace_back("build", format("%.1f ms, %.0f triangles, %.0f threads", build_milliseconds, static_cast<double>(triangles),
-                                       static_cast<double>(build_threads)));
+    lines.emplace_back("build", format(build_threads == 1 ? "%.1f ms, %.0f triangles, %.0f thread" : "%.1f ms, %.0f triangles, %.0f threads",
+                                       build_milliseconds, static_cast<double>(triangles), static_cast<double>(build_threads)));
     if (skipped_triangles > 0)
         lines.emplace_back("skipped", format("%.0f triangles with a non-finite vertex", static_cast<double>(skipped_triangles)));
     lines.emplace_back("nodes", format("%.0f (%.0f leaves, %.0f of them empty)", static_cast<double>(nodes),

@@ -3,6 +3,7 @@
 #include "freezeray/ch06/register_chapter06.hpp"
 
 #include "freezeray/ch06/kdtree_accelerator.hpp"
+#include "freezeray/ch06/traversal_cost_integrator.hpp"
 
 #include <string>
 
@@ -16,6 +17,15 @@ void register_chapter06(Registry& registry) {
                                  return std::make_unique<ch06::KdTreeAccelerator>(ch06::read_kdtree_settings(parameters));
                              });
     registry.set_default_accelerator("kdtree");
+    registry.add_integrator("traversal-cost", 6,
+                            "not light: the KD-tree's interior nodes, leaves or triangle tests per camera ray, in false colour",
+                            [](const RenderSettings&, const Parameters& parameters) {
+                                return std::make_unique<ch06::TraversalCostIntegrator>(
+                                    ch06::read_traversal_quantity(parameters));
+                            });
+    registry.add_option({"--traversal-cost-show", "traversal_cost_show", OptionType::Text, OptionTarget::Integrator,
+                         "traversal-cost: nodes (interior nodes visited), leaves or tests (triangle tests); default nodes",
+                         {"traversal-cost"}, 6});
 
     // The settings of kdtree_settings.hpp, as flags; a scene's "accelerator" block takes the
     // same keys ({"type": "kdtree", "intersection_cost": 20}).

@@ -15,6 +15,11 @@
 
 namespace freezeray {
 
+// The folder of the large public scenes that are not in the repository: the environment
+// variable FREEZERAY_SHARED_SCENES, or when it is unset the folder shared/scenes beside the
+// checkout (../shared/scenes from the repository's root).
+std::string shared_scenes_folder();
+
 class Parameters {
 public:
     // json: the object; file: the scene file; path: JSON pointer of the object ("/materials/light");
@@ -44,7 +49,8 @@ public:
     Vec3 require_vec3(const std::string& key) const;
     // A colour given as [r, g, b] or a single number (grey).
     Spectrum get_spectrum(const std::string& key, const Spectrum& fallback) const;
-    // A path relative to the base directory, resolved and checked to exist.
+    // A path relative to the base directory, resolved and checked to exist. A name beginning
+    // with "$FREEZERAY_SHARED_SCENES/" is in the shared scenes folder (shared_scenes_folder()).
     std::string require_existing_file(const std::string& key) const;
     Parameters child(const std::string& key) const;  // a nested object (must exist)
     const nlohmann::json& json() const { return json_; }

@@ -15,6 +15,12 @@
 
 namespace freezeray::ch06 {
 
+// The work of one closest-hit query: the interior nodes and leaves it visited and the triangles
+// it tested (a triangle in several leaves is tested, and counted, in each).
+struct TraversalCounts {
+    std::uint32_t interior_nodes = 0, leaves = 0, triangle_tests = 0;
+};
+
 class KdTreeAccelerator final : public Accelerator {
 public:
     explicit KdTreeAccelerator(const KdTreeSettings& settings = {});
@@ -28,6 +34,9 @@ public:
     std::optional<Hit> intersect(const Ray& ray) const override;
     bool occluded(const Ray& ray) const override;
 
+    // What intersect(ray) does, counted (the traversal-cost integrator's images).
+    TraversalCounts count_traversal(const Ray& ray) const;
+
     std::vector<std::pair<std::string, std::string>> describe() const override;
     // The nodes, the leaves' lists and the triangle copies (KdTreeStatistics::memory_bytes).
     std::optional<std::size_t> memory_bytes() const override { return statistics_.memory_bytes; }
@@ -37,6 +46,9 @@ public:
     const KdTree& tree() const { return tree_; }
 
 private:
+    // intersect, counting its work into `counts` when that is not null.
+    std::optional<Hit> closest_hit(const Ray& ray, TraversalCounts* counts) const;
+
     KdTreeSettings settings_;
     const std::vector<TriangleMesh>* meshes_ = nullptr;
     std::vector<TriangleVertices> vertices_;  // per global triangle

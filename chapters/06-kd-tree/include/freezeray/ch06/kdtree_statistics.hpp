@@ -10,7 +10,7 @@ namespace freezeray::ch06 {
 
 struct KdTreeStatistics {
     double build_milliseconds = 0.0;
-    int build_threads = 1;                // threads that built subtrees at the same time
+    int build_threads = 1;                // threads that built subtrees (the first one included)
     std::size_t triangles = 0;            // given to the build
     std::size_t skipped_triangles = 0;    // with a non-finite vertex: no ray can hit them, no cell holds them
     std::size_t nodes = 0;

@@ -1,5 +1,6 @@
 // False-colour maps of per-pixel error: viridis on a log scale between fixed bounds, so that the
-// maps of different integrators (and of different reports) can be compared by eye.
+// maps of different integrators (and of different reports) can be compared by eye. The viridis
+// map itself serves other per-pixel quantities too (chapter 06's traversal-cost images).
 #pragma once
 
 #include "freezeray/image.hpp"
@@ -15,6 +16,10 @@ inline constexpr double FalseColourHighest = 10.0;
 
 // Viridis at t in [0, 1] (clamped), as sRGB-encoded components in [0, 1].
 Spectrum viridis_srgb(double t);
+
+// The linear RGB whose sRGB encoding is viridis at t: what an Image holds for write_image to
+// show the colour.
+Spectrum viridis_linear(double t);
 
 // The same colour as "#rrggbb", for SVG and CSS.
 std::string viridis_hex(double t);

@@ -1,0 +1,293 @@
+#!/usr/bin/env python3
+"""Chapter 06's measured figures, made with ray-benchmark (its --json lines).
+
+    kdtree_figures.py build-scaling --build-dir build --out book/figures/ch06-build-scaling/plot.svg
+    kdtree_figures.py cost-sweep    --build-dir build --out book/figures/ch06-cost-sweep/plot.svg
+    kdtree_figures.py depth-sweep   --build-dir build --out book/figures/ch06-depth-sweep/plot.svg
+
+build-scaling: the KD-tree's build time (one thread) against the triangle count N, on spheres
+subdivided 3 to 8 times (1,280 to 1,310,720 triangles, written to a temporary folder) and on the
+shared scenes' bunny, dragon and Sponza, beside Embree's high-quality build of the same meshes
+in the same runs. The slope of log(time) against log(N) over the spheres is fitted: O(N log N)
+gives a little more than 1.
+
+cost-sweep: Mrays/s of the shared Sponza batches (one thread) against the intersection cost
+C_I with the traversal cost C_T = 1, with the build time and memory of each tree, beside Embree
+on the same rays in the same run.
+
+depth-sweep: the same against the maximum depth, with pbrt-v3's costs (the automatic depth for
+Sponza is 31).
+
+Each writes the SVG plot at --out and a Markdown table beside it (table.md), with the machine's
+figures as measured; the shared scenes come from ../shared/scenes or $FREEZERAY_SHARED_SCENES.
+Without them, the figure is not made (exit status 0, a message says why).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[3]
+sys.path.insert(0, str(ROOT / "scenes" / "tools"))
+import meshes  # noqa: E402  (the scene tools' mesh generators)
+
+
+def shared_scenes() -> Path:
+    return Path(os.environ.get("FREEZERAY_SHARED_SCENES", ROOT.parent / "shared" / "scenes"))
+
+
+def ray_benchmark(build_dir: Path) -> Path:
+    path = build_dir / "chapters" / "06-kd-tree" / "benchmark" / "ray-benchmark"
+    if not path.is_file():
+        sys.exit(f"kdtree_figures: {path} is not built (cmake --build {build_dir} --target ray-benchmark)")
+    return path
+
+
+def run_json(command: list[str]) -> tuple[list[dict], int]:
+    """ray-benchmark's JSON lines, and the mesh's triangle count from its notes."""
+    print("  " + " ".join(command), flush=True)
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"kdtree_figures: the command failed ({result.returncode}):\n{result.stderr}")
+    triangles = 0
+    for line in result.stderr.splitlines():
+        if line.startswith("mesh:"):  # "mesh: PATH, N triangles, M vertices"
+            triangles = int(line.rsplit(" triangles", 1)[0].rsplit(" ", 1)[1])
+    return [json.loads(line) for line in result.stdout.splitlines() if line.startswith("{")], triangles
+
+
+# --- meshes -------------------------------------------------------------------------------
+
+
+def write_icosphere(path: Path, subdivisions: int) -> int:
+    """The unit icosphere of scenes/tools/meshes.py, subdivided `subdivisions` times, as OBJ."""
+    vertices, faces = meshes.icosphere(subdivisions)
+    with path.open("w") as out:
+        meshes.write_obj_vertices(out, vertices)
+        for a, b, c in faces:
+            out.write(f"f {a + 1} {b + 1} {c + 1}\n")
+    return len(faces)
+
+
+def obj_bounds(path: Path) -> tuple[list[float], list[float]]:
+    low, high = [math.inf] * 3, [-math.inf] * 3
+    with path.open() as obj:
+        for line in obj:
+            if line.startswith("v "):
+                p = [float(x) for x in line.split()[1:4]]
+                low = [min(a, b) for a, b in zip(low, p)]
+                high = [max(a, b) for a, b in zip(high, p)]
+    return low, high
+
+
+def camera_for(path: Path) -> str:
+    """A camera outside the mesh's bounds, looking at their centre (ray-benchmark --camera)."""
+    low, high = obj_bounds(path)
+    centre = [(a + b) / 2.0 for a, b in zip(low, high)]
+    radius = math.sqrt(sum((b - a) ** 2 for a, b in zip(low, high))) / 2.0
+    direction = (0.3, 0.4, 1.0)
+    norm = math.sqrt(sum(d * d for d in direction))
+    eye = [c + 2.5 * radius * d / norm for c, d in zip(centre, direction)]
+    return ",".join("%.6g" % x for x in eye + centre + [40.0])
+
+
+# --- plots --------------------------------------------------------------------------------
+
+
+def svg_plot(series: list[dict], x_label: str, y_label: str, title: str, log_x: bool, log_y: bool) -> str:
+    """A line plot: each series {"name", "points": [(x, y)], "colour", "dashed"?}."""
+    width, height, left, right, top, bottom = 640, 400, 70, 150, 36, 50
+    xs = [x for s in series for x, _ in s["points"]]
+    ys = [y for s in series for _, y in s["points"]]
+    fx = (lambda v: math.log10(v)) if log_x else (lambda v: v)
+    fy = (lambda v: math.log10(v)) if log_y else (lambda v: v)
+    x0, x1 = min(map(fx, xs)), max(map(fx, xs))
+    y0, y1 = min(map(fy, ys)), max(map(fy, ys))
+    if log_y:
+        y0, y1 = math.floor(y0), math.ceil(y1)
+    else:
+        y0, y1 = 0.0, y1 * 1.1
+    if log_x:
+        x0, x1 = math.floor(x0), math.ceil(x1)
+    px = lambda v: left + (fx(v) - x0) / (x1 - x0) * (width - left - right)
+    py = lambda v: height - bottom - (fy(v) - y0) / (y1 - y0) * (height - top - bottom)
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" '
+           f'font-size="12">', f'<rect width="{width}" height="{height}" fill="white"/>',
+           f'<text x="{width / 2}" y="20" text-anchor="middle" font-size="14">{title}</text>']
+    # Axes and ticks: decades on log axes, five steps on linear ones.
+    out.append(f'<line x1="{left}" y1="{height - bottom}" x2="{width - right}" y2="{height - bottom}" stroke="black"/>')
+    out.append(f'<line x1="{left}" y1="{top}" x2="{left}" y2="{height - bottom}" stroke="black"/>')
+    def ticks(a: float, b: float, log: bool) -> list[float]:
+        if log:
+            return [10.0 ** k for k in range(int(a), int(b) + 1)]
+        return [a + (b - a) * k / 5 for k in range(6)]
+    for v in ticks(x0, x1, log_x):
+        x = px(v)
+        out.append(f'<line x1="{x:.1f}" y1="{height - bottom}" x2="{x:.1f}" y2="{height - bottom + 5}" stroke="black"/>')
+        out.append(f'<text x="{x:.1f}" y="{height - bottom + 18}" text-anchor="middle">{v:g}</text>')
+    for v in ticks(y0, y1, log_y):
+        y = py(v)
+        out.append(f'<line x1="{left - 5}" y1="{y:.1f}" x2="{left}" y2="{y:.1f}" stroke="black"/>')
+        out.append(f'<line x1="{left}" y1="{y:.1f}" x2="{width - right}" y2="{y:.1f}" stroke="#ddd"/>')
+        out.append(f'<text x="{left - 8}" y="{y + 4:.1f}" text-anchor="end">{v:.3g}</text>')
+    out.append(f'<text x="{(left + width - right) / 2}" y="{height - 12}" text-anchor="middle">{x_label}</text>')
+    out.append(f'<text x="16" y="{(top + height - bottom) / 2}" text-anchor="middle" '
+               f'transform="rotate(-90 16 {(top + height - bottom) / 2})">{y_label}</text>')
+    for i, s in enumerate(series):
+        points = sorted(s["points"])
+        dash = ' stroke-dasharray="5,4"' if s.get("dashed") else ""
+        if s.get("line", True) and len(points) > 1:
+            path = " ".join(f"{px(x):.1f},{py(y):.1f}" for x, y in points)
+            out.append(f'<polyline points="{path}" fill="none" stroke="{s["colour"]}" stroke-width="2"{dash}/>')
+        for x, y in points:
+            out.append(f'<circle cx="{px(x):.1f}" cy="{py(y):.1f}" r="3.5" fill="{s["colour"]}"/>')
+        ly = top + 10 + 18 * i
+        out.append(f'<line x1="{width - right + 10}" y1="{ly}" x2="{width - right + 30}" y2="{ly}" '
+                   f'stroke="{s["colour"]}" stroke-width="2"{dash}/>')
+        out.append(f'<text x="{width - right + 35}" y="{ly + 4}">{s["name"]}</text>')
+    out.append("</svg>")
+    return "\n".join(out) + "\n"
+
+
+def least_squares_slope(points: list[tuple[float, float]]) -> float:
+    lx = [math.log(x) for x, _ in points]
+    ly = [math.log(y) for _, y in points]
+    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sum((a - mx) ** 2 for a in lx)
+
+
+# --- the figures --------------------------------------------------------------------------
+
+
+def build_scaling(args: argparse.Namespace) -> int:
+    scenes = shared_scenes()
+    benchmark = ray_benchmark(args.build_dir)
+    rows = []  # (name, triangles, kdtree ms, embree ms or None, a sphere?)
+    bytes_per_triangle: dict[str, float] = {}  # the tree's memory (nodes, lists, triangle copies)
+    with tempfile.TemporaryDirectory() as folder:
+        inputs = []
+        for level in range(3, 9):
+            path = Path(folder) / f"sphere-{level}.obj"
+            write_icosphere(path, level)
+            inputs.append((f"sphere, {level} subdivisions", path, True))
+        for name, relative in (("dragon", "stanford-dragon/dragon.obj"), ("bunny", "stanford-bunny/bunny.obj"),
+                               ("Sponza", "crytek-sponza/sponza.obj")):
+            if (scenes / relative).is_file():
+                inputs.append((name, scenes / relative, False))
+            else:
+                print(f"kdtree_figures: {scenes / relative} not found; {name} is left out")
+        for name, path, is_sphere in inputs:
+            command = [str(benchmark), str(path), "--accel", "kdtree", "--kdtree-build-threads", "1", "--limit", "1",
+                       "--reps", "1", "--json", "--resolution", "8", "--camera", camera_for(path)]
+            kdtree_ms, embree_ms, triangles, memory = [], [], 0, 0.0
+            for _ in range(args.repetitions):
+                lines, triangles = run_json(command)
+                kd = [l for l in lines if l["accel"] == "kdtree"]
+                em = [l for l in lines if l["accel"] == "embree"]
+                kdtree_ms.append(kd[0]["build_ms"])
+                memory = kd[0]["memory_mb"] or 0.0
+                if em:
+                    embree_ms.append(em[0]["build_ms"])
+            rows.append((name, triangles, sorted(kdtree_ms)[len(kdtree_ms) // 2],
+                         sorted(embree_ms)[len(embree_ms) // 2] if embree_ms else None, is_sphere))
+            bytes_per_triangle[name] = memory * 1024 * 1024 / triangles
+    spheres = [(n, k) for name, n, k, e, s in rows if s]
+    slope = least_squares_slope(spheres)
+    large_slope = least_squares_slope(spheres[-3:])
+    series = [{"name": "kdtree, spheres", "colour": "#c0392b", "points": spheres},
+              {"name": "kdtree, scenes", "colour": "#e67e22", "line": False,
+               "points": [(n, k) for name, n, k, e, s in rows if not s]}]
+    if all(e is not None for *_, e, _ in rows):
+        series.append({"name": "Embree, spheres", "colour": "#2c3e50", "dashed": True,
+                       "points": [(n, e) for name, n, k, e, s in rows if s]})
+        series.append({"name": "Embree, scenes", "colour": "#7f8c8d", "line": False,
+                       "points": [(n, e) for name, n, k, e, s in rows if not s]})
+    out = Path(args.out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(svg_plot(series, "triangles N", "build time (ms, one thread)",
+                            f"Build time against N (kdtree slope {slope:.2f} on the spheres)", True, True))
+    table = ["| mesh | triangles | kdtree build ms | Embree build ms | ratio | kdtree bytes per triangle |",
+             "| :-- | --: | --: | --: | --: | --: |"]
+    for name, n, k, e, _ in rows:
+        table.append(f"| {name} | {n:,} | {k:.0f} | {'' if e is None else f'{e:.0f}'} | "
+                     f"{'' if e is None else f'{k / e:.2f}'} | {bytes_per_triangle[name]:.0f} |")
+    table.append("")
+    table.append(f"Least-squares slope of log(kdtree build ms) against log(N): {slope:.3f} over all the spheres, "
+                 f"{large_slope:.3f} over the three largest (medians of {args.repetitions} runs each; one build "
+                 "thread for both).")
+    (out.parent / "table.md").write_text("\n".join(table) + "\n")
+    print("\n".join(table))
+    return 0
+
+
+def sweep(args: argparse.Namespace, flag: str, values: list[int], x_label: str, title: str, log_x: bool,
+          first_column: str) -> int:
+    """Sponza's shared batches traced by trees built with `flag` set to each of `values`."""
+    scenes = shared_scenes()
+    mesh = scenes / "crytek-sponza" / "sponza.obj"
+    rays = scenes.parent / "rays" / "sponza.rays"
+    if not mesh.is_file() or not rays.is_file():
+        print(f"kdtree_figures: {mesh} or {rays} not found; the sweep is not made")
+        return 0
+    benchmark = ray_benchmark(args.build_dir)
+    measured = {}  # value -> {kind: the kdtree row}
+    embree = {}    # value -> {kind: Embree's Mrays/s in the same run}
+    for value in values:
+        lines, _ = run_json([str(benchmark), str(mesh), "--rays", str(rays), "--accel", "kdtree", "--threads", "1",
+                             "--reps", str(args.repetitions), "--json", flag, str(value)])
+        measured[value] = {l["kind"]: l for l in lines if l["accel"] == "kdtree"}
+        embree[value] = {l["kind"]: l["mrays_per_s"] for l in lines if l["accel"] == "embree"}
+    colours = {"primary": "#2980b9", "diffuse": "#c0392b", "shadow": "#27ae60"}
+    series = [{"name": f"kdtree {kind}", "colour": colours[kind],
+               "points": [(v, measured[v][kind]["mrays_per_s"]) for v in values]} for kind in colours]
+    out = Path(args.out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(svg_plot(series, x_label, "Mrays/s (one thread)", title, log_x, False))
+    table = [f"| {first_column} | primary Mrays/s | diffuse Mrays/s | shadow Mrays/s | build ms | memory MB | "
+             "diffuse / Embree's |", "| --: | --: | --: | --: | --: | --: | --: |"]
+    for v in values:
+        row = measured[v]
+        ratio = row["diffuse"]["mrays_per_s"] / embree[v]["diffuse"] if embree[v] else float("nan")
+        table.append(f"| {v} | {row['primary']['mrays_per_s']:.3g} | {row['diffuse']['mrays_per_s']:.3g} | "
+                     f"{row['shadow']['mrays_per_s']:.3g} | {row['primary']['build_ms']:.0f} | "
+                     f"{row['primary'].get('memory_mb') or 0:.1f} | {ratio:.2f} |")
+    if any(embree.values()):
+        table.append("")
+        medians = {kind: sorted(e[kind] for e in embree.values())[len(values) // 2] for kind in colours}
+        table.append("Embree in the same runs, the median over them: " +
+                     ", ".join(f"{kind} {m:.3g}" for kind, m in medians.items()) +
+                     f" Mrays/s. Each row is the median of {args.repetitions} timed runs after a warm-up; the "
+                     "last column divides by Embree's diffuse rate measured in the same run.")
+    (out.parent / "table.md").write_text("\n".join(table) + "\n")
+    print("\n".join(table))
+    return 0
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    commands = parser.add_subparsers(dest="figure", required=True)
+    for name in ("build-scaling", "cost-sweep", "depth-sweep"):
+        command = commands.add_parser(name)
+        command.add_argument("--build-dir", type=Path, default=ROOT / "build")
+        command.add_argument("--out", required=True, help="the SVG to write; table.md goes beside it")
+        command.add_argument("--repetitions", type=int, default=3)
+    args = parser.parse_args()
+    if args.figure == "build-scaling":
+        return build_scaling(args)
+    if args.figure == "cost-sweep":
+        return sweep(args, "--kdtree-intersection-cost", [5, 10, 20, 40, 80, 160, 320],
+                     "C_I / C_T (C_T = 1, empty bonus 0.5)", "Sponza: rays per second against the cost ratio", True,
+                     "C_I / C_T")
+    return sweep(args, "--kdtree-max-depth", [18, 22, 26, 29, 31, 34, 38], "maximum depth (automatic: 31)",
+                 "Sponza: rays per second against the depth limit", False, "max depth")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
