@@ -16,6 +16,18 @@ using namespace freezeray;
 using namespace freezeray::ch01;
 using namespace freezeray::ch04;
 
+namespace {
+
+// The Cornell box with brute force, chapter 04's accelerator: the default KD-tree would run
+// chapter 06's exercises, which a student of chapter 04 has not written yet.
+Scene load_cornell_box() {
+    SceneLoadOptions options;
+    options.accelerator = "bruteforce";
+    return load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry(), options);
+}
+
+}  // namespace
+
 TEST_CASE("ch04/strategy-ratio", "[exercise]") {
     // Veach 1997, eq. 10.9: r_i = r_{i+1} p_rev / p_fwd, a zero density (a delta vertex) as 1.
     REQUIRE(next_strategy_ratio(2.0, 3.0f, 4.0f) == Approx(1.5));
@@ -29,7 +41,7 @@ TEST_CASE("ch04/strategy-ratio", "[exercise]") {
 
     // Used by bdpt's weights: on 50 complete paths of the Cornell box, the weights of every
     // strategy sum to one and equal the power heuristic written out with the full densities.
-    const Scene scene = load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry());
+    const Scene scene = load_cornell_box();
     const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
     const int checked = testing::for_paths_ending_on_emitters(scene, lights, 50, 41, [&](const testing::FullPath& path) {
         const int n = static_cast<int>(path.x.size());
@@ -50,7 +62,7 @@ TEST_CASE("ch04/camera-connection", "[exercise]") {
     // A Lambertian point of the Cornell box seen off-centre: the value must be
     // beta (rho / pi) |cos theta_vertex| We / pdf, with We = 1 / (A cos^4 theta_camera) and
     // pdf = d^2 / cos theta_camera (the shading normal is the geometric one: no correction).
-    const Scene scene = load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry());
+    const Scene scene = load_cornell_box();
     const PinholeCamera& camera = *scene.camera;
     const Vec2 film(0.2f * static_cast<float>(camera.width()), 0.7f * static_cast<float>(camera.height()));
     const std::optional<Hit> hit = scene.intersect(camera.generate_ray(film));

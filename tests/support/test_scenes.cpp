@@ -49,6 +49,7 @@ RenderResult render(const TestRender& request) {
     SceneLoadOptions options;
     options.width = request.width;
     options.height = request.height;
+    options.accelerator = request.accelerator;
     const Scene scene = load_scene(request.scene, full_registry(), options);
     RenderSettings settings;
     settings.samples_per_pixel = request.samples_per_pixel;

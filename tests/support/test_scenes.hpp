@@ -38,6 +38,10 @@ struct TestRender {
     bool strategy_images = false;     // bdpt's per-strategy images (--bdpt-strategies; not written)
     std::uint64_t mlt_bootstrap = 0;  // --mlt-bootstrap (0: mlt's default)
     int mlt_chains = 0;               // --mlt-chains (0: mlt's default)
+    // --accel (empty: the scene's, else the default). An exercise test of a chapter before 06
+    // asks for "bruteforce": the default KD-tree runs chapter 06's exercises, which a student
+    // of an earlier chapter has not written yet.
+    std::string accelerator;
 };
 
 // Loads and renders, quietly.

@@ -4,6 +4,7 @@
     kdtree_figures.py build-scaling --build-dir build --out book/figures/ch06-build-scaling/plot.svg
     kdtree_figures.py cost-sweep    --build-dir build --out book/figures/ch06-cost-sweep/plot.svg
     kdtree_figures.py depth-sweep   --build-dir build --out book/figures/ch06-depth-sweep/plot.svg
+    kdtree_figures.py equal-time    --build-dir build --out book/figures/ch06-equal-time.md
 
 build-scaling: the KD-tree's build time (one thread) against the triangle count N, on spheres
 subdivided 3 to 8 times (1,280 to 1,310,720 triangles, written to a temporary folder) and on the
@@ -17,6 +18,10 @@ on the same rays in the same run.
 
 depth-sweep: the same against the maximum depth, with pbrt-v3's costs (the automatic depth for
 Sponza is 31).
+
+equal-time: pt-mis on scenes/sponza/scene.json for the same seconds with brute force and with
+the KD-tree, each image's relMSE against a reference rendered with the KD-tree and another seed
+(kept in out/, made once), as a Markdown table at --out.
 
 Each writes the SVG plot at --out and a Markdown table beside it (table.md), with the machine's
 figures as measured; the shared scenes come from ../shared/scenes or $FREEZERAY_SHARED_SCENES.
@@ -270,17 +275,79 @@ def sweep(args: argparse.Namespace, flag: str, values: list[int], x_label: str, 
     return 0
 
 
+def equal_time(args: argparse.Namespace) -> int:
+    """pt-mis on Sponza for the same seconds with brute force and with the KD-tree, each image's
+    error measured by `freezeray compare` against one reference rendered with another seed."""
+    scenes = shared_scenes()
+    if not (scenes / "crytek-sponza" / "sponza.obj").is_file():
+        print(f"kdtree_figures: {scenes / 'crytek-sponza'} not found; the comparison is not made")
+        return 0
+    freezeray = args.build_dir / "chapters" / "freezeray"
+    if not freezeray.is_file():
+        sys.exit(f"kdtree_figures: {freezeray} is not built (cmake --build {args.build_dir} --target freezeray)")
+    out = Path(args.out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    size = ["--width", str(args.size), "--height", str(args.size)]
+    scene = ROOT / "scenes" / "sponza" / "scene.json"
+    reference = ROOT / "out" / f"sponza-{args.size}-reference.pfm"
+    if not reference.is_file():
+        reference.parent.mkdir(parents=True, exist_ok=True)
+        command = [str(freezeray), "render", str(scene), "--integrator", "pt-mis", "--time", str(args.reference_seconds),
+                   "--seed", "777", "--quiet", "--out", str(reference)] + size
+        print("  " + " ".join(command), flush=True)
+        subprocess.run(command, check=True)
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for accelerator in ("bruteforce", "kdtree"):
+            # The scene with an accelerator block: compare has no --accel of its own.
+            description = json.loads(scene.read_text())
+            description["accelerator"] = {"type": accelerator}
+            variant = Path(folder) / f"sponza-{accelerator}.json"
+            variant.write_text(json.dumps(description))
+            report = Path(folder) / accelerator
+            command = [str(freezeray), "compare", str(variant), "--integrators", "pt-mis", "--time", str(args.seconds),
+                       "--reference", str(reference), "--seed", "1", "--out", str(report), "--quiet"] + size
+            print("  " + " ".join(command), flush=True)
+            result = subprocess.run(command, capture_output=True, text=True)
+            if result.returncode != 0:
+                sys.exit(f"kdtree_figures: compare failed:\n{result.stderr}")
+            # "pt-mis  <spp> spp  <seconds> s  relMSE <value>  slope <s>"
+            line = next(l for l in result.stderr.splitlines() if l.startswith("pt-mis"))
+            words = line.split()
+            rows.append((accelerator, int(words[1]), float(words[3]), float(words[6])))
+    brute, tree = rows
+    table = ["| accelerator | samples per pixel | seconds | samples per second | relMSE against the reference |",
+             "| :-- | --: | --: | --: | --: |"]
+    for name, spp, seconds, error in rows:
+        table.append(f"| {name} | {spp:,} | {seconds:.1f} | {spp * args.size * args.size / seconds:,.0f} | {error:.4g} |")
+    table.append("")
+    table.append(f"pt-mis on scenes/sponza/scene.json at {args.size}x{args.size}, {args.seconds:g} s each, seed 1; the "
+                 f"reference: pt-mis with the KD-tree for {args.reference_seconds:g} s, seed 777. The KD-tree's image "
+                 f"has {tree[3] / brute[3]:.3g} times brute force's error after the same time "
+                 f"({brute[3] / tree[3]:.3g} times lower), with {tree[1] / brute[1]:.3g} times the samples.")
+    out.write_text("\n".join(table) + "\n")
+    print("\n".join(table))
+    return 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     commands = parser.add_subparsers(dest="figure", required=True)
-    for name in ("build-scaling", "cost-sweep", "depth-sweep"):
+    for name in ("build-scaling", "cost-sweep", "depth-sweep", "equal-time"):
         command = commands.add_parser(name)
         command.add_argument("--build-dir", type=Path, default=ROOT / "build")
-        command.add_argument("--out", required=True, help="the SVG to write; table.md goes beside it")
+        command.add_argument("--out", required=True, help="the SVG to write; table.md goes beside it "
+                             "(equal-time: the Markdown table)")
         command.add_argument("--repetitions", type=int, default=3)
+        if name == "equal-time":
+            command.add_argument("--seconds", type=float, default=30.0, help="render time of each image")
+            command.add_argument("--reference-seconds", type=float, default=480.0)
+            command.add_argument("--size", type=int, default=64, help="image width and height")
     args = parser.parse_args()
     if args.figure == "build-scaling":
         return build_scaling(args)
+    if args.figure == "equal-time":
+        return equal_time(args)
     if args.figure == "cost-sweep":
         return sweep(args, "--kdtree-intersection-cost", [5, 10, 20, 40, 80, 160, 320],
                      "C_I / C_T (C_T = 1, empty bonus 0.5)", "Sponza: rays per second against the cost ratio", True,
