@@ -73,6 +73,19 @@ Beam beam_around(const Ray& ray, const Bounds3& bounds) {
 }
 // END BOOK
 
+// The counters of the traversal's work: none for intersect and occluded (a template parameter,
+// so that they cost nothing there), TraversalCounts for count_traversal.
+struct NoCounting {
+    void visit(const KdTreeNode&) {}
+    void test() {}
+};
+
+struct Counting {
+    TraversalCounts& counts;
+    void visit(const KdTreeNode& node) { ++(node.is_leaf() ? counts.leaves : counts.interior_nodes); }
+    void test() { ++counts.triangle_tests; }
+};
+
 struct TraversalTask {
     std::uint32_t node;
     float t_min, t_max;
@@ -82,10 +95,10 @@ struct TraversalTask {
 // Visits the leaves the beam around the ray's range [t_min, t_max] touches, in the order the
 // ray enters them. visit_leaf(leaf) returns the distance beyond which nothing is wanted (the
 // closest hit so far, or -infinity to stop); cells the beam reaches only beyond it are skipped.
-// `counts`, when not null, counts the interior nodes and leaves visited.
-template <typename VisitLeaf>
+// `counter` is told of every node visited (NoCounting, for the queries themselves, does nothing).
+template <typename Counter, typename VisitLeaf>
 void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction, const Beam& beam, float t_min,
-              float t_max, TraversalCounts* counts, VisitLeaf&& visit_leaf) {
+              float t_max, Counter& counter, VisitLeaf&& visit_leaf) {
     // Per axis: whether the ray is parallel to planes across it, and how long the beam takes
     // to cross one.
     bool parallel[3];
@@ -111,7 +124,7 @@ void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction,
             continue;
         }
         const KdTreeNode& node = tree.nodes[index];
-        if (counts != nullptr) ++(node.is_leaf() ? counts->leaves : counts->interior_nodes);
+        counter.visit(node);
         if (!node.is_leaf()) {
             const ChildOrder order = order_children(node, index, ray, inverse_direction);
             const int axis = node.split_axis();
@@ -166,16 +179,9 @@ void for_each_triangle(const KdTree& tree, const KdTreeNode& leaf, F&& f) {
 
 }  // namespace
 
-std::optional<Hit> KdTreeAccelerator::intersect(const Ray& ray) const { return closest_hit(ray, nullptr); }
-
-TraversalCounts KdTreeAccelerator::count_traversal(const Ray& ray) const {
-    TraversalCounts counts;
-    closest_hit(ray, &counts);
-    return counts;
-}
-
 // BOOK(kdtree-intersect)
-std::optional<Hit> KdTreeAccelerator::closest_hit(const Ray& ray, TraversalCounts* counts) const {
+template <typename Counter>
+std::optional<Hit> KdTreeAccelerator::closest_hit(const Ray& ray, Counter& counter) const {
     if (tree_.nodes.empty() || !is_traceable(ray)) return std::nullopt;
     const Vec3 inverse_direction = 1.0f / ray.direction;
     float t_enter = 0.0f, t_exit = 0.0f;
@@ -187,9 +193,9 @@ std::optional<Hit> KdTreeAccelerator::closest_hit(const Ray& ray, TraversalCount
     const RayShear shear(ray.direction);
     Ray test = ray;
     CloseHits close;
-    traverse(tree_, ray, inverse_direction, beam, t_enter, t_exit, counts, [&](const KdTreeNode& leaf) {
+    traverse(tree_, ray, inverse_direction, beam, t_enter, t_exit, counter, [&](const KdTreeNode& leaf) {
         for_each_triangle(tree_, leaf, [&](std::uint32_t triangle) {
-            if (counts != nullptr) ++counts->triangle_tests;
+            counter.test();
             const TriangleVertices& v = vertices_[triangle];
             if (const auto hit = intersect_triangle(test, shear, v.p0, v.p1, v.p2)) {
                 close.add(triangle, *hit);
@@ -207,6 +213,18 @@ std::optional<Hit> KdTreeAccelerator::closest_hit(const Ray& ray, TraversalCount
 }
 // END BOOK
 
+std::optional<Hit> KdTreeAccelerator::intersect(const Ray& ray) const {
+    NoCounting counter;
+    return closest_hit(ray, counter);
+}
+
+TraversalCounts KdTreeAccelerator::count_traversal(const Ray& ray) const {
+    TraversalCounts counts;
+    Counting counter{counts};
+    closest_hit(ray, counter);
+    return counts;
+}
+
 bool KdTreeAccelerator::occluded(const Ray& ray) const {
     if (tree_.nodes.empty() || !is_traceable(ray)) return false;
     const Vec3 inverse_direction = 1.0f / ray.direction;
@@ -218,7 +236,8 @@ bool KdTreeAccelerator::occluded(const Ray& ray) const {
 
     const RayShear shear(ray.direction);
     bool found = false;
-    traverse(tree_, ray, inverse_direction, beam, t_enter, t_exit, nullptr, [&](const KdTreeNode& leaf) {
+    NoCounting counter;
+    traverse(tree_, ray, inverse_direction, beam, t_enter, t_exit, counter, [&](const KdTreeNode& leaf) {
         for_each_triangle(tree_, leaf, [&](std::uint32_t triangle) {
             const TriangleVertices& v = vertices_[triangle];
             // A hit counts, as in brute force, if the ray also meets its mesh's box.

@@ -46,8 +46,9 @@ public:
     const KdTree& tree() const { return tree_; }
 
 private:
-    // intersect, counting its work into `counts` when that is not null.
-    std::optional<Hit> closest_hit(const Ray& ray, TraversalCounts* counts) const;
+    // intersect, telling `counter` of its work (kdtree_traversal.cpp, the only user).
+    template <typename Counter>
+    std::optional<Hit> closest_hit(const Ray& ray, Counter& counter) const;
 
     KdTreeSettings settings_;
     const std::vector<TriangleMesh>* meshes_ = nullptr;
