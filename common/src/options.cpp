@@ -31,15 +31,26 @@ std::string option_default_text(double value) {
 }
 
 void check_options_apply(const OptionValues& given, const std::vector<OptionDeclaration>& declarations,
-                         OptionTarget target, const std::string& chosen) {
+                         OptionTarget target, const std::vector<std::string>& chosen, const std::string& role) {
+    auto listed = [](const std::vector<std::string>& names) {
+        std::string text;
+        for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+        return text;
+    };
     for (const OptionDeclaration& d : declarations) {
         if (d.target != target || !given.values.contains(d.key) || d.used_by.empty()) continue;
-        if (std::find(d.used_by.begin(), d.used_by.end(), chosen) != d.used_by.end()) continue;
-        std::string users;
-        for (const std::string& u : d.used_by) users += (users.empty() ? "" : ", ") + u;
-        throw InputError(d.flag, "is an option of " + users + ", not of " + chosen + " (this render's " +
-                                     (target == OptionTarget::Integrator ? "integrator" : "accelerator") + ")");
+        const bool read = std::any_of(chosen.begin(), chosen.end(), [&](const std::string& name) {
+            return std::find(d.used_by.begin(), d.used_by.end(), name) != d.used_by.end();
+        });
+        if (read) continue;
+        throw InputError(d.flag, "is an option of " + listed(d.used_by) + ", not of " + listed(chosen) + " (" + role + ")");
     }
+}
+
+void check_options_apply(const OptionValues& given, const std::vector<OptionDeclaration>& declarations,
+                         OptionTarget target, const std::string& chosen) {
+    check_options_apply(given, declarations, target, std::vector<std::string>{chosen},
+                        target == OptionTarget::Integrator ? "this render's integrator" : "this render's accelerator");
 }
 
 }  // namespace freezeray

@@ -10,6 +10,8 @@
 #include "freezeray/random.hpp"
 #include "freezeray/ch01/warps.hpp"
 
+#include "test_bounds.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <bit>
@@ -20,15 +22,9 @@
 
 using namespace freezeray;
 using namespace freezeray::ch06;
+using freezeray::testing::box;
 
 namespace {
-
-Bounds3 box(const Vec3& min, const Vec3& max) {
-    Bounds3 b;
-    b.expand(min);
-    b.expand(max);
-    return b;
-}
 
 // The bounds of triangle ∩ box from the vertices of that convex polygon, found without clipping:
 // the triangle's vertices inside the box, its edges' crossings of the box's planes inside the box,

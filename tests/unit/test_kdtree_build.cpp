@@ -1,6 +1,7 @@
 // The KD-tree's build: degenerate input, determinism, the cells of its leaves, perfect splits,
 // its statistics and settings; rays it must refuse.
 #include "kdtree_test_support.hpp"
+#include "test_bounds.hpp"
 #include "test_scenes.hpp"
 
 #include "freezeray/ch06/kdtree_accelerator.hpp"
@@ -26,13 +27,6 @@ using ch06::KdTreeAccelerator;
 using ch06::KdTreeNode;
 
 namespace {
-
-Bounds3 box(const Vec3& min, const Vec3& max) {
-    Bounds3 b;
-    b.expand(min);
-    b.expand(max);
-    return b;
-}
 
 void check_conformance(const std::vector<TriangleMesh>& meshes, const Bounds3& origins, int count, std::uint64_t seed) {
     for (const std::string& name : accelerators_under_test()) {

@@ -5,6 +5,7 @@
 // them are the hard part: there the rounding of the cells' ranges and of the triangles' t
 // decides which cells a ray visits.
 #include "kdtree_test_support.hpp"
+#include "test_bounds.hpp"
 
 #include "freezeray/ch06/kdtree_accelerator.hpp"
 #include "freezeray/scene.hpp"
@@ -27,13 +28,6 @@ void check_conformance(const std::string& what, const std::vector<TriangleMesh>&
         CHECK(c.rays == rays.size());
         CHECK(c.mismatches == 0);
     }
-}
-
-Bounds3 box(const Vec3& min, const Vec3& max) {
-    Bounds3 b;
-    b.expand(min);
-    b.expand(max);
-    return b;
 }
 
 Bounds3 bounds_of(const std::vector<TriangleMesh>& meshes) {

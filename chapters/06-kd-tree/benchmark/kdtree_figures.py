@@ -174,8 +174,8 @@ def least_squares_slope(points: list[tuple[float, float]]) -> float:
 def build_scaling(args: argparse.Namespace) -> int:
     scenes = shared_scenes()
     benchmark = ray_benchmark(args.build_dir)
-    rows = []  # (name, triangles, kdtree ms, embree ms or None, a sphere?)
-    bytes_per_triangle: dict[str, float] = {}  # the tree's memory (nodes, lists, triangle copies)
+    # (name, triangles, kdtree ms, embree ms or None, a sphere?, the tree's bytes per triangle)
+    rows = []
     with tempfile.TemporaryDirectory() as folder:
         inputs = []
         for level in range(3, 9):
@@ -201,28 +201,28 @@ def build_scaling(args: argparse.Namespace) -> int:
                 if em:
                     embree_ms.append(em[0]["build_ms"])
             rows.append((name, triangles, sorted(kdtree_ms)[len(kdtree_ms) // 2],
-                         sorted(embree_ms)[len(embree_ms) // 2] if embree_ms else None, is_sphere))
-            bytes_per_triangle[name] = memory * 1024 * 1024 / triangles
-    spheres = [(n, k) for name, n, k, e, s in rows if s]
+                         sorted(embree_ms)[len(embree_ms) // 2] if embree_ms else None, is_sphere,
+                         memory * 1024 * 1024 / triangles))
+    spheres = [(n, k) for name, n, k, e, s, _ in rows if s]
     slope = least_squares_slope(spheres)
     large_slope = least_squares_slope(spheres[-3:])
     series = [{"name": "kdtree, spheres", "colour": "#c0392b", "points": spheres},
               {"name": "kdtree, scenes", "colour": "#e67e22", "line": False,
-               "points": [(n, k) for name, n, k, e, s in rows if not s]}]
-    if all(e is not None for *_, e, _ in rows):
+               "points": [(n, k) for name, n, k, e, s, _ in rows if not s]}]
+    if all(e is not None for _, _, _, e, _, _ in rows):
         series.append({"name": "Embree, spheres", "colour": "#2c3e50", "dashed": True,
-                       "points": [(n, e) for name, n, k, e, s in rows if s]})
+                       "points": [(n, e) for name, n, k, e, s, _ in rows if s]})
         series.append({"name": "Embree, scenes", "colour": "#7f8c8d", "line": False,
-                       "points": [(n, e) for name, n, k, e, s in rows if not s]})
+                       "points": [(n, e) for name, n, k, e, s, _ in rows if not s]})
     out = Path(args.out)
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(svg_plot(series, "triangles N", "build time (ms, one thread)",
                             f"Build time against N (kdtree slope {slope:.2f} on the spheres)", True, True))
     table = ["| mesh | triangles | kdtree build ms | Embree build ms | ratio | kdtree bytes per triangle |",
              "| :-- | --: | --: | --: | --: | --: |"]
-    for name, n, k, e, _ in rows:
+    for name, n, k, e, _, tree_bytes in rows:
         table.append(f"| {name} | {n:,} | {k:.0f} | {'' if e is None else f'{e:.0f}'} | "
-                     f"{'' if e is None else f'{k / e:.2f}'} | {bytes_per_triangle[name]:.0f} |")
+                     f"{'' if e is None else f'{k / e:.2f}'} | {tree_bytes:.0f} |")
     table.append("")
     table.append(f"Least-squares slope of log(kdtree build ms) against log(N): {slope:.3f} over all the spheres, "
                  f"{large_slope:.3f} over the three largest (medians of {args.repetitions} runs each; one build "

@@ -18,7 +18,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -92,22 +91,6 @@ BuiltAccelerator build_named(const std::string& name, const Registry& registry, 
                              const std::vector<TriangleMesh>& meshes) {
     if (name == EmbreeName) return *build_embree(meshes);
     return build_registry_accelerator(registry, name, settings, meshes);
-}
-
-// Refuses an accelerator setting that none of the measured accelerators reads (a setting of
-// kdtree given with --accel bruteforce would otherwise be silently dropped).
-void check_settings_apply(const Options& options, const Registry& registry, const std::vector<std::string>& accelerators) {
-    for (const OptionDeclaration& d : registry.options()) {
-        if (d.target != OptionTarget::Accelerator || !options.accelerator_options.values.contains(d.key)) continue;
-        const bool read = std::any_of(accelerators.begin(), accelerators.end(), [&](const std::string& name) {
-            return std::find(d.used_by.begin(), d.used_by.end(), name) != d.used_by.end();
-        });
-        if (!read) {
-            std::string users;
-            for (const std::string& u : d.used_by) users += (users.empty() ? "" : ", ") + u;
-            throw InputError(d.flag, "is a setting of " + users + ", and none of them is measured (--accel)");
-        }
-    }
 }
 
 RayBatches make_batches(const Options& options, const Registry& registry, const Parameters& accelerator_settings,
@@ -193,7 +176,9 @@ int run(const Options& options, const Registry& registry) {
     if (accelerators.empty())
         for (const Registry::Entry& entry : registry.list(CapabilityKind::Accelerator)) accelerators.push_back(entry.name);
     // Unknown names and settings out of range are refused now, before minutes of loading and tracing.
-    check_settings_apply(options, registry, accelerators);
+    // A setting that none of the measured accelerators reads would be silently dropped.
+    check_options_apply(options.accelerator_options, registry.options(), OptionTarget::Accelerator, accelerators,
+                        "the accelerators measured, --accel");
     const OptionParameters settings(nullptr, "", "", ".", options.accelerator_options, registry.options(),
                                     OptionTarget::Accelerator);
     for (const std::string& name : accelerators) {

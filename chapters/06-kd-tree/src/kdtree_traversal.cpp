@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace freezeray::ch06 {
@@ -71,6 +72,25 @@ Beam beam_around(const Ray& ray, const Bounds3& bounds) {
     const float radius = BeamRadiusScale * farthest;
     return {radius, 2.0f * radius / largest_direction};
 }
+
+// Where the walk of a ray starts: its inverse direction, its beam, and the range of t in which
+// the beam is inside the tree's bounds. Nothing for a ray the traversal cannot follow, or one
+// that misses the bounds.
+struct Walk {
+    Vec3 inverse_direction;
+    Beam beam;
+    float t_enter, t_exit;
+};
+
+std::optional<Walk> start_walk(const KdTree& tree, const Ray& ray) {
+    if (tree.nodes.empty() || !is_traceable(ray)) return std::nullopt;
+    Walk walk{1.0f / ray.direction, {}, 0.0f, 0.0f};
+    if (!clip_ray_to_bounds(ray, walk.inverse_direction, tree.bounds, walk.t_enter, walk.t_exit)) return std::nullopt;
+    walk.beam = beam_around(ray, tree.bounds);
+    walk.t_enter = std::max(0.0f, walk.t_enter - walk.beam.t_slack);
+    walk.t_exit += walk.beam.t_slack;
+    return walk;
+}
 // END BOOK
 
 // The counters of the traversal's work: none for intersect and occluded (a template parameter,
@@ -92,13 +112,15 @@ struct TraversalTask {
 };
 
 // BOOK(kdtree-traverse)
-// Visits the leaves the beam around the ray's range [t_min, t_max] touches, in the order the
-// ray enters them. visit_leaf(leaf) returns the distance beyond which nothing is wanted (the
+// Visits the leaves the beam around the ray's range [walk.t_enter, walk.t_exit] touches, in the
+// order the ray enters them. visit_leaf(leaf) returns the distance beyond which nothing is wanted (the
 // closest hit so far, or -infinity to stop); cells the beam reaches only beyond it are skipped.
 // `counter` is told of every node visited (NoCounting, for the queries themselves, does nothing).
 template <typename Counter, typename VisitLeaf>
-void traverse(const KdTree& tree, const Ray& ray, const Vec3& inverse_direction, const Beam& beam, float t_min,
-              float t_max, Counter& counter, VisitLeaf&& visit_leaf) {
+void traverse(const KdTree& tree, const Ray& ray, const Walk& walk, Counter& counter, VisitLeaf&& visit_leaf) {
+    const Vec3& inverse_direction = walk.inverse_direction;
+    const Beam& beam = walk.beam;
+    float t_min = walk.t_enter, t_max = walk.t_exit;
     // Per axis: whether the ray is parallel to planes across it, and how long the beam takes
     // to cross one.
     bool parallel[3];
@@ -182,18 +204,12 @@ void for_each_triangle(const KdTree& tree, const KdTreeNode& leaf, F&& f) {
 // BOOK(kdtree-intersect)
 template <typename Counter>
 std::optional<Hit> KdTreeAccelerator::closest_hit(const Ray& ray, Counter& counter) const {
-    if (tree_.nodes.empty() || !is_traceable(ray)) return std::nullopt;
-    const Vec3 inverse_direction = 1.0f / ray.direction;
-    float t_enter = 0.0f, t_exit = 0.0f;
-    if (!clip_ray_to_bounds(ray, inverse_direction, tree_.bounds, t_enter, t_exit)) return std::nullopt;
-    const Beam beam = beam_around(ray, tree_.bounds);
-    t_enter = std::max(0.0f, t_enter - beam.t_slack);
-    t_exit += beam.t_slack;
-
+    const std::optional<Walk> walk = start_walk(tree_, ray);
+    if (!walk) return std::nullopt;
     const RayShear shear(ray.direction);
     Ray test = ray;
     CloseHits close;
-    traverse(tree_, ray, inverse_direction, beam, t_enter, t_exit, counter, [&](const KdTreeNode& leaf) {
+    traverse(tree_, ray, *walk, counter, [&](const KdTreeNode& leaf) {
         for_each_triangle(tree_, leaf, [&](std::uint32_t triangle) {
             counter.test();
             const TriangleVertices& v = vertices_[triangle];
@@ -206,7 +222,8 @@ std::optional<Hit> KdTreeAccelerator::closest_hit(const Ray& ray, Counter& count
         return close.limit();
     });
     if (close.empty()) return std::nullopt;
-    const auto choice = close.brute_force_choice(ray, inverse_direction, shear, vertices_, ids_, brute_force_.mesh_bounds());
+    const auto choice =
+        close.brute_force_choice(ray, walk->inverse_direction, shear, vertices_, ids_, brute_force_.mesh_bounds());
     if (!choice) return brute_force_.intersect(ray);  // its box test culled them all: its own answer
     const TriangleId& id = ids_[choice->triangle];
     return make_hit(*meshes_, id.mesh, id.triangle, choice->hit);
@@ -226,23 +243,17 @@ TraversalCounts KdTreeAccelerator::count_traversal(const Ray& ray) const {
 }
 
 bool KdTreeAccelerator::occluded(const Ray& ray) const {
-    if (tree_.nodes.empty() || !is_traceable(ray)) return false;
-    const Vec3 inverse_direction = 1.0f / ray.direction;
-    float t_enter = 0.0f, t_exit = 0.0f;
-    if (!clip_ray_to_bounds(ray, inverse_direction, tree_.bounds, t_enter, t_exit)) return false;
-    const Beam beam = beam_around(ray, tree_.bounds);
-    t_enter = std::max(0.0f, t_enter - beam.t_slack);
-    t_exit += beam.t_slack;
-
+    const std::optional<Walk> walk = start_walk(tree_, ray);
+    if (!walk) return false;
     const RayShear shear(ray.direction);
     bool found = false;
     NoCounting counter;
-    traverse(tree_, ray, inverse_direction, beam, t_enter, t_exit, counter, [&](const KdTreeNode& leaf) {
+    traverse(tree_, ray, *walk, counter, [&](const KdTreeNode& leaf) {
         for_each_triangle(tree_, leaf, [&](std::uint32_t triangle) {
             const TriangleVertices& v = vertices_[triangle];
             // A hit counts, as in brute force, if the ray also meets its mesh's box.
             found = intersect_triangle(ray, shear, v.p0, v.p1, v.p2) &&
-                    ray_intersects_bounds(ray, inverse_direction, brute_force_.mesh_bounds()[ids_[triangle].mesh]);
+                    ray_intersects_bounds(ray, walk->inverse_direction, brute_force_.mesh_bounds()[ids_[triangle].mesh]);
             return !found;  // the first hit answers the question
         });
         return found ? -std::numeric_limits<float>::infinity() : ray.tmax;

@@ -67,4 +67,10 @@ std::string option_default_text(double value);
 void check_options_apply(const OptionValues& given, const std::vector<OptionDeclaration>& declarations,
                          OptionTarget target, const std::string& chosen);
 
+// The same for a run that uses several capabilities of `target`'s kind (a benchmark measuring
+// several accelerators): an option is refused when none of `chosen` reads it; `role` names them
+// in the message ("the accelerators measured").
+void check_options_apply(const OptionValues& given, const std::vector<OptionDeclaration>& declarations,
+                         OptionTarget target, const std::vector<std::string>& chosen, const std::string& role);
+
 }  // namespace freezeray
