@@ -5,6 +5,8 @@
 #include "freezeray/mesh.hpp"
 #include "freezeray/obj_loader.hpp"
 
+#include "test_scenes.hpp"
+
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -12,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -299,10 +302,9 @@ TEST_CASE("a transform moves positions and normals and keeps the front side", "[
 }
 
 TEST_CASE("the shared Cornell box loads with its 36 triangles", "[unit][obj]") {
-    const char* variable = std::getenv("FREEZERAY_SHARED_SCENES");
-    const std::string scenes = variable != nullptr ? variable : std::string(FREEZERAY_SOURCE_DIR) + "/../shared/scenes";
-    const std::string path = scenes + "/cornell-box/cornell-box.obj";
-    if (!std::filesystem::exists(path)) {
+    const std::optional<std::string> scenes = testing::shared_scenes_folder();
+    const std::string path = scenes.value_or("(no shared scenes folder)") + "/cornell-box/cornell-box.obj";
+    if (!scenes || !std::filesystem::exists(path)) {
         WARN("skipped: " << path << " is not there (set FREEZERAY_SHARED_SCENES)");
         return;
     }

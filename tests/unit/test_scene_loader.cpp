@@ -7,7 +7,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <fstream>
+#include <optional>
 
 using namespace freezeray;
 using freezeray::testing::TemporaryFolder;
@@ -198,4 +200,40 @@ TEST_CASE("unknown keys of the camera and of a transform give warnings with the 
     CHECK_THAT(scene.warnings[0], Catch::Contains("/camera/resolutoin") && Catch::Contains("did you mean 'resolution'"));
     CHECK_THAT(scene.warnings[1], Catch::Contains("/meshes/0/transform/translation") &&
                                       Catch::Contains("did you mean 'translate'"));
+}
+
+// The scenes that read the shared large scenes (scenes/sponza): what their files promise.
+TEST_CASE("Sponza loads under its white sky and at night with its lanterns and night sky", "[unit][scene]") {
+    const std::optional<std::string> shared = testing::shared_scenes_folder();
+    if (!shared || !std::filesystem::exists(*shared + "/crytek-sponza/sponza.obj") ||
+        !std::filesystem::exists(*shared + "/envmaps/dikhololo_night_1k.hdr")) {
+        WARN("skipped: the shared Sponza or its night sky is not there (set FREEZERAY_SHARED_SCENES)");
+        return;
+    }
+    SceneLoadOptions options;
+    options.accelerator = "bruteforce";  // what is loaded is the question here, not the tree
+    constexpr std::size_t SponzaTriangles = 262266;  // 262,267 in the file, one of zero area dropped
+    SECTION("under the white sky: the constant environment, nothing that emits") {
+        const Scene scene = load_scene(testing::scene_path("sponza/scene.json"), testing::full_registry(), options);
+        CHECK(scene.triangle_count() == SponzaTriangles);
+        CHECK(scene.emissive_triangles.empty());
+        REQUIRE(scene.lights.size() == 1u);
+        CHECK(scene.environment == scene.lights[0].get());
+        CHECK(scene.effects.textures);
+    }
+    SECTION("at night: eighteen lanterns of 80 emissive triangles and the night sky") {
+        const Scene scene = load_scene(testing::scene_path("sponza/night.json"), testing::full_registry(), options);
+        CHECK(scene.triangle_count() == SponzaTriangles + 18 * 80);
+        CHECK(scene.emissive_triangles.size() == 18u * 80u);
+        CHECK(scene.lights.size() == 18u * 80u + 1u);  // one area light per emissive triangle, then the sky
+        CHECK(scene.environment != nullptr);
+        CHECK(scene.effects.area_emitters);
+        CHECK(scene.effects.environment);
+        // The lanterns hang in the open, inside Sponza's bounds.
+        for (const auto& emitter : scene.emissive_triangles) {
+            const TriangleMesh& mesh = scene.meshes[emitter.mesh];
+            const Vec3 p = mesh.positions[mesh.triangles[emitter.triangle][0]];
+            CHECK((p.y > 200.0f && p.y < 400.0f));
+        }
+    }
 }
