@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Writes lanterns.obj and lanterns.mtl (run from this folder): the small spherical lamps that light Sponza at
-night (night.json), as the scene is lit "with many area lights" in the comparisons of path
-tracing, bidirectional path tracing and Metropolis light transport.
+"""Writes lanterns.obj and lanterns.mtl (run from this folder): the small spherical lamps that
+light Sponza at night (night.json). Many small area lights under a night sky are the lighting of
+the comparison of path tracing, bidirectional path tracing and Metropolis light transport on
+real scenes.
 
 Each lantern is an icosphere of radius 8 cm (80 triangles, every one an area light of its own),
 hung in the open: six along the middle of the court, four in each ground-floor arcade, and one
