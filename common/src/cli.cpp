@@ -77,9 +77,12 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
     const Comparison comparison = run_comparison(request, registry);
     write_comparison_report(comparison, request.out_folder);
     for (const IntegratorRun& run : comparison.runs) {
-        std::fprintf(stderr, "%-12s %8llu spp %8.2f s  relMSE %-10.4g%s  slope %.2f\n", run.integrator.c_str(),
+        char slope[48] = "no fit";
+        if (run.fit.points > 0)
+            std::snprintf(slope, sizeof slope, "slope %.2f (%.2f to %.2f)", run.fit.slope, run.fit.slope_low, run.fit.slope_high);
+        std::fprintf(stderr, "%-12s %8llu spp %8.2f s  relMSE %-10.4g%s  %s\n", run.integrator.c_str(),
                      static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, run.relative_mse,
-                     run.error_is_estimated ? " (estimated)" : "", run.fit.slope);
+                     run.error_is_estimated ? " (estimated)" : "", slope);
         for (const std::string& w : run.result.warnings) std::fprintf(stderr, "warning: %s: %s\n", run.integrator.c_str(), w.c_str());
     }
     std::cout << request.out_folder << "/report.html\n";
@@ -149,7 +152,7 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     auto* compare_spp = compare_command->add_option("--spp", compare.samples_per_pixel, "samples per pixel per integrator");
     compare_time->excludes(compare_spp);
     compare_command->add_option("--reference", compare.reference, "reference image (EXR, PFM, HDR)");
-    compare_command->add_option("--out", compare.out_folder, "folder for report.html, report.md, convergence.csv")->required();
+    compare_command->add_option("--out", compare.out_folder, "folder for report.html, report.md, convergence.csv, time_to_accuracy.csv")->required();
     compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
     compare_command->add_option("--seed", compare.seed, "random seed");
     compare_command->add_option("--max-depth", compare.max_depth, "maximum path length in segments");

@@ -132,8 +132,20 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
             run.error_is_estimated = true;
         }
         if (run.relative_mse > 0.0 && run.result.seconds > 0.0) run.efficiency = 1.0 / (run.relative_mse * run.result.seconds);
+        // The final image is the last checkpoint: a time budget ends between pass boundaries.
+        if (run.checkpoints.empty() || run.checkpoints.back().samples_per_pixel != run.result.samples_per_pixel) {
+            Checkpoint last;
+            last.seconds = run.result.seconds;
+            last.samples_per_pixel = run.result.samples_per_pixel;
+            last.estimated_relative_mse = run.result.estimated_relative_mse;
+            if (comparison.reference) {
+                last.mse = run.mse;
+                last.relative_mse = run.relative_mse;
+            }
+            run.checkpoints.push_back(last);
+        }
         run.fit = fit_convergence(run.checkpoints);
-        run.time_to_accuracy = times_to_accuracy(run.checkpoints, run.fit, {1e-2, 1e-3});
+        run.time_to_accuracy = times_to_accuracy(run.checkpoints, {1e-2, 1e-3});
         if (run.result.invalid_samples > 0 && !request.quiet)
             std::cerr << "warning: " << run.integrator << " produced " << run.result.invalid_samples
                       << " invalid (NaN, infinite or negative) samples\n";

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
 
 namespace freezeray {
 
@@ -38,40 +40,97 @@ double ConvergenceFit::predict(double seconds) const {
     return std::pow(10.0, intercept + slope * std::log10(seconds));
 }
 
-double ConvergenceFit::time_to_reach(double relative_mse) const {
-    if (points == 0 || slope >= 0.0) return std::numeric_limits<double>::infinity();
-    return std::pow(10.0, (std::log10(relative_mse) - intercept) / slope);
+namespace {
+
+// The points a run's fits read: (log10 seconds, log10 relMSE) of its checkpoints with an error,
+// the first left out (one sample per pixel: its time is mostly start-up, threads and caches, not
+// the estimator's cost).
+struct LogPoints {
+    std::vector<double> x, y;
+};
+
+LogPoints log_points(const std::vector<Checkpoint>& checkpoints) {
+    LogPoints points;
+    for (std::size_t i = 1; i < checkpoints.size(); ++i) {
+        const double error = checkpoint_error(checkpoints[i]);
+        if (error > 0.0 && checkpoints[i].seconds > 0.0 && std::isfinite(error)) {
+            points.x.push_back(std::log10(checkpoints[i].seconds));
+            points.y.push_back(std::log10(error));
+        }
+    }
+    return points;
 }
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+}  // namespace
 
 // BOOK(fit-convergence)
 ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints) {
-    // Least squares on (log10 t, log10 relMSE). The first checkpoint (one sample per pixel) is
-    // left out: its time is mostly start-up (threads, caches), not the estimator's cost.
-    std::vector<double> xs, ys;
-    for (std::size_t i = 1; i < checkpoints.size(); ++i) {
-        const double error = checkpoint_error(checkpoints[i]);
-        if (error > 0.0 && checkpoints[i].seconds > 0.0) {
-            xs.push_back(std::log10(checkpoints[i].seconds));
-            ys.push_back(std::log10(error));
-        }
-    }
+    const LogPoints p = log_points(checkpoints);
     ConvergenceFit fit;
-    if (xs.size() < 2) return fit;
-    const Line line = fit_line(xs, ys);
-    fit.slope = line.slope;
-    fit.intercept = line.intercept;
-    fit.points = static_cast<int>(xs.size());
+    const std::size_t n = p.x.size();
+    if (n < static_cast<std::size_t>(ConvergenceFit::MinimumPoints)) {
+        fit.no_fit_reason = std::to_string(n) + (n == 1 ? " checkpoint" : " checkpoints") + ", " +
+                            std::to_string(ConvergenceFit::MinimumPoints) + " needed";
+        return fit;
+    }
+    const double span = std::pow(10.0, p.x.back() - p.x.front());
+    if (span < ConvergenceFit::MinimumTimeSpan) {
+        char text[96];
+        std::snprintf(text, sizeof text, "checkpoints span %.1fx in time, %.0fx needed", span, ConvergenceFit::MinimumTimeSpan);
+        fit.no_fit_reason = text;
+        return fit;
+    }
+    // Theil-Sen: the median of the slopes between every pair of checkpoints (at different times).
+    std::vector<double> slopes;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j)
+            if (p.x[j] != p.x[i]) slopes.push_back((p.y[j] - p.y[i]) / (p.x[j] - p.x[i]));
+    if (slopes.empty()) {
+        fit.no_fit_reason = "every checkpoint at the same time";
+        return fit;
+    }
+    std::sort(slopes.begin(), slopes.end());
+    fit.slope = median(slopes);
+    std::vector<double> intercepts(n);
+    for (std::size_t i = 0; i < n; ++i) intercepts[i] = p.y[i] - fit.slope * p.x[i];
+    fit.intercept = median(intercepts);
+    // Sen's 95% interval: the slopes of ranks (N -+ C) / 2 among the N sorted ones, with
+    // C = 1.96 sqrt(n (n - 1) (2n + 5) / 18), the normal approximation to Kendall's tau's spread
+    // (Sen 1968; Hollander and Wolfe, "Nonparametric Statistical Methods", 1973, section 9.3).
+    const double count = static_cast<double>(slopes.size()), nd = static_cast<double>(n);
+    const double c = 1.96 * std::sqrt(nd * (nd - 1.0) * (2.0 * nd + 5.0) / 18.0);
+    const auto at_rank = [&](double rank) {  // ranks from 1
+        const double clamped = std::clamp(std::round(rank), 1.0, count);
+        return slopes[static_cast<std::size_t>(clamped) - 1];
+    };
+    fit.slope_low = at_rank((count - c) / 2.0);
+    fit.slope_high = at_rank((count + c) / 2.0 + 1.0);
+    fit.points = static_cast<int>(n);
     return fit;
 }
 // END BOOK
 
-std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints, const ConvergenceFit& fit,
+// BOOK(time-to-accuracy)
+std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints,
                                               const std::vector<double>& targets) {
+    // The line of slope -1 through the checkpoints: log10(relMSE x seconds) is constant along it,
+    // and its median over the checkpoints places it (robust to a firefly, as the fit is).
+    const LogPoints p = log_points(checkpoints);
+    std::vector<double> products;
+    for (std::size_t i = 0; i < p.x.size(); ++i) products.push_back(p.x[i] + p.y[i]);
+    const double run_seconds = checkpoints.empty() ? 0.0 : checkpoints.back().seconds;
     std::vector<TimeToAccuracy> result;
     for (double target : targets) {
         TimeToAccuracy t;
         t.target = target;
-        t.seconds = fit.time_to_reach(target);
+        t.seconds = products.empty() ? std::numeric_limits<double>::infinity()
+                                     : std::pow(10.0, median(products) - std::log10(target));
         // Measured: the first checkpoint at or below the target, interpolated log-linearly from
         // the one before it.
         for (std::size_t i = 0; i < checkpoints.size(); ++i) {
@@ -90,10 +149,14 @@ std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& che
                 break;
             }
         }
+        // Read beyond ExtrapolationLimit times the run's time, the line is a guess, not a figure.
+        if (!t.measured && std::isfinite(t.seconds))
+            t.beyond_limit = !(t.seconds <= TimeToAccuracy::ExtrapolationLimit * run_seconds);
         result.push_back(t);
     }
     return result;
 }
+// END BOOK
 
 std::vector<CropRegion> highest_error_regions(const std::vector<IntegratorRun>& runs, const Image& reference,
                                               int size, int count) {

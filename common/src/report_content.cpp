@@ -147,13 +147,23 @@ AccuracyTable accuracy_table(const Comparison& comparison) {
             if (time == run.time_to_accuracy.end() || std::isnan(time->seconds)) {
                 texts.push_back("—");
             } else if (std::isinf(time->seconds)) {
-                texts.push_back("never (∞)");
+                texts.push_back("never (no checkpoint to read)");
+            } else if (time->measured) {
+                texts.push_back(format_number(time->seconds) + " s (measured)");
+            } else if (time->beyond_limit) {
+                texts.push_back("> " + format_number(TimeToAccuracy::ExtrapolationLimit) + "× budget (not measured)");
+            } else if (run.fit.points > 0 && !run.fit.agrees_with_unbiased_rate()) {
+                texts.push_back(format_number(time->seconds) + " s along slope −1, which its fit contradicts");
             } else {
-                texts.push_back(format_number(time->seconds) + " s (" + (time->measured ? "measured" : "extrapolated") + ")");
+                texts.push_back(format_number(time->seconds) + " s (along slope −1)");
             }
         }
         table.rows.emplace_back(run.integrator, texts);
     }
+    table.note = "Measured: the run reached the target (interpolated between the checkpoints around it). Along "
+                 "slope −1: read along the line an unbiased estimator follows, through the run's checkpoints, and "
+                 "given as a number only up to " + format_number(TimeToAccuracy::ExtrapolationLimit) +
+                 "× the run's time; where the run's own fitted slope excludes −1, that reading is not to be trusted.";
     return table;
 }
 
@@ -183,8 +193,12 @@ std::string describe_crop(const NumberedCrop& crop) {
 }
 
 std::string describe_fit(const ConvergenceFit& fit) {
-    if (fit.points == 0) return "no fit (too few checkpoints)";
-    return "slope " + format_slope(fit.slope) + " from " + std::to_string(fit.points) + " checkpoints";
+    if (fit.points == 0) return "no fit (" + fit.no_fit_reason + ")";
+    std::string text = "slope " + format_slope(fit.slope) + " (95 %: " + format_slope(fit.slope_low) + " to " +
+                       format_slope(fit.slope_high) + ") from " + std::to_string(fit.points) + " checkpoints";
+    if (!fit.agrees_with_unbiased_rate())
+        text += "; not −1, the unbiased rate: fireflies still being found, bias, or a reference not converged";
+    return text;
 }
 
 std::vector<std::pair<std::string, std::string>> header_facts(const Comparison& comparison, const Layout& layout) {
@@ -209,10 +223,12 @@ std::vector<std::string> how_to_read(const Comparison& comparison) {
         "The relMSE of an unbiased estimator falls like 1 / time, so its efficiency does not depend on how long "
         "it ran: an integrator twice as efficient reaches the same error in half the time.",
         "On the log–log plot of error against time, an unbiased estimator's line is straight with slope −1: "
-        "the MSE halves when the time doubles. The dashed lines are least-squares fits (the legend gives each "
-        "slope); a line that flattens out instead shows bias, or a reference that is itself not converged. "
-        "Time to accuracy reads the same curves at a target error: measured when the run got there, "
-        "extrapolated along its fitted line when it did not.",
+        "the MSE halves when the time doubles (the grey guide). The dashed lines are robust fits (Theil–Sen: the "
+        "median of the slopes between pairs of checkpoints, from at least 4 checkpoints spanning at least 4× in "
+        "time; the table gives each slope's 95 % interval); a slope whose interval excludes −1 shows fireflies "
+        "still being found, bias, or a reference that is itself not converged. "
+        "Time to accuracy reads the curves at a target error: measured when the run got there, else read along "
+        "the line of slope −1 through its checkpoints, and given as a number only up to 10× the run's time.",
         "Best in each column is marked: lowest time, MSE and relMSE; highest SSIM (structural similarity, "
         "1 is identical) and efficiency."};
     if (!comparison.reference) {

@@ -16,6 +16,7 @@ namespace freezeray::report {
 inline const std::string PlotFile = "images/convergence.svg";
 inline const std::string ColourBarFile = "images/colour-bar.svg";
 inline const std::string CsvFile = "convergence.csv";
+inline const std::string TimesCsvFile = "time_to_accuracy.csv";
 inline const std::string ReferenceName = "reference";
 // Crops are magnified this many times, nearest neighbour, so that every pixel stays visible.
 inline constexpr int CropMagnification = 4;
@@ -72,10 +73,12 @@ struct MetricsTable {
 MetricsTable metrics_table(const Comparison& comparison);
 
 // Times to reach each target relMSE: targets in the order the runs give them, and per run one
-// text per target ("3.21 s (measured)", "41.2 s (extrapolated)", "never (∞)", "—").
+// text per target ("3.21 s (measured)", "41.2 s (along slope −1)", "> 10× budget (not
+// measured)", "never (no checkpoint to read)", "—"), and the note that explains them.
 struct AccuracyTable {
     std::vector<double> targets;
     std::vector<std::pair<std::string, std::vector<std::string>>> rows;
+    std::string note;
 };
 AccuracyTable accuracy_table(const Comparison& comparison);
 

@@ -124,7 +124,8 @@ std::string plot_and_accuracy(const Comparison& comparison, const Layout& layout
     for (std::size_t i = 0; i < comparison.runs.size(); ++i) {
         html += "<li>" + escape_xml(layout.run_names[i]) + ": " + escape_xml(describe_fit(comparison.runs[i].fit)) + "</li>\n";
     }
-    html += "</ul>\n<p>Every checkpoint is in <code>" + CsvFile + "</code> beside this page.</p>\n";
+    html += "</ul>\n<p>Every checkpoint is in <code>" + CsvFile + "</code> beside this page, every time to accuracy in <code>" +
+            TimesCsvFile + "</code>.</p>\n";
 
     const AccuracyTable table = accuracy_table(comparison);
     if (table.targets.empty()) return html;
@@ -136,8 +137,7 @@ std::string plot_and_accuracy(const Comparison& comparison, const Layout& layout
         for (const std::string& time : times) html += "<td>" + escape_xml(time) + "</td>";
         html += "</tr>\n";
     }
-    return html + "</table>\n<p>Measured: the run reached the target (interpolated between checkpoints). "
-                  "Extrapolated: read off its fitted line.</p>\n";
+    return html + "</table>\n<p>" + escape_xml(table.note) + "</p>\n";
 }
 
 std::string images_section(const Comparison& comparison, const Layout& layout, const std::string& folder) {

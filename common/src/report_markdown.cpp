@@ -51,7 +51,8 @@ std::string plot_section(const Comparison& comparison, const Layout& layout) {
         text += "- " + layout.run_names[i] + ": " + describe_fit(comparison.runs[i].fit) + "\n";
     }
     return text + "\nEvery checkpoint (time, samples per pixel, errors) is in [" + CsvFile + "](" + CsvFile +
-           "), one row per checkpoint, numbered from 1.\n\n";
+           "), one row per checkpoint, numbered from 1; every time to accuracy, the extrapolated ones as numbers "
+           "too, in [" + TimesCsvFile + "](" + TimesCsvFile + ").\n\n";
 }
 
 std::string accuracy_section(const Comparison& comparison) {
@@ -65,8 +66,7 @@ std::string accuracy_section(const Comparison& comparison) {
         cells.insert(cells.end(), times.begin(), times.end());
         text += table_row(cells);
     }
-    return text + "\nMeasured: the run reached the target (interpolated between checkpoints). Extrapolated: read "
-                  "off its fitted line.\n\n";
+    return text + "\n" + table.note + "\n\n";
 }
 
 // One row of images: a header with the names, then the images.

@@ -196,15 +196,24 @@ std::string convergence_plot_svg(const Comparison& comparison, SvgUse use) {
                             " font-size=\"16\" fill=\"#666666\" text-anchor=\"middle\"");
     }
 
-    // One polyline with markers per run, and its fitted line dashed (clipped to the axes).
+    // One polyline with markers per run, and its fitted line dashed (clipped to the axes); behind
+    // them a grey guide of slope -1, the unbiased rate, through the middle of the first run's
+    // checkpoints, to hold each line against.
     svg += "<g clip-path=\"url(#plot-area)\">\n";
+    for (const auto& points : series) {
+        if (points.empty()) continue;
+        const auto& [seconds, error] = points[points.size() / 2];
+        const double left = std::pow(10.0, axes.x_decades.first), right = std::pow(10.0, axes.x_decades.second);
+        svg += line_element(axes.x(left), axes.y(error * seconds / left), axes.x(right), axes.y(error * seconds / right),
+                            "stroke=\"#999999\" stroke-width=\"1.5\" stroke-dasharray=\"2 4\"");
+        break;
+    }
     for (std::size_t i = 0; i < comparison.runs.size(); ++i) {
         const std::string colour = run_colour(i);
         const ConvergenceFit& fit = comparison.runs[i].fit;
         if (fit.points > 0 && !series[i].empty()) {
-            // From the first checkpoint to the right edge: where the line goes is what the
-            // extrapolated times to accuracy read.
-            const double first = series[i].front().first, last = std::pow(10.0, axes.x_decades.second);
+            // Over the checkpoints only: the fit describes the run, it does not extrapolate it.
+            const double first = series[i].front().first, last = series[i].back().first;
             svg += line_element(axes.x(first), axes.y(fit.predict(first)), axes.x(last), axes.y(fit.predict(last)),
                                 "stroke=\"" + colour + "\" stroke-width=\"1.5\" stroke-dasharray=\"7 5\"");
         }
@@ -222,12 +231,16 @@ std::string convergence_plot_svg(const Comparison& comparison, SvgUse use) {
         svg += line_element(LegendX, y, LegendX + 30, y, "stroke=\"" + run_colour(i) + "\" stroke-width=\"2\"");
         svg += marker(i, LegendX + 15, y, run_colour(i));
         svg += text_element(LegendX + 38, y + 5, legend_name(run.integrator), " font-size=\"15\"");
-        const std::string slope = run.fit.points > 0 ? "slope " + format_slope(run.fit.slope) : "no fit";
+        const std::string slope = run.fit.points > 0 ? "slope " + format_slope(run.fit.slope) +
+                                                           (run.fit.agrees_with_unbiased_rate() ? "" : " (not −1)")
+                                                     : "no fit";
         svg += text_element(LegendX + 38, y + 23, slope, " font-size=\"13\" fill=\"#444444\"");
     }
     svg += line_element(LegendX, y, LegendX + 30, y, "stroke=\"#444444\" stroke-width=\"1.5\" stroke-dasharray=\"7 5\"");
-    svg += text_element(LegendX + 38, y + 5, "least-squares fit", " font-size=\"13\" fill=\"#444444\"");
-    svg += text_element(LegendX, y + 27, "slope −1: unbiased rate", " font-size=\"13\" fill=\"#444444\"");
+    svg += text_element(LegendX + 38, y + 5, "robust fit", " font-size=\"13\" fill=\"#444444\"");
+    y += 24;
+    svg += line_element(LegendX, y, LegendX + 30, y, "stroke=\"#999999\" stroke-width=\"1.5\" stroke-dasharray=\"2 4\"");
+    svg += text_element(LegendX + 38, y + 5, "slope −1: unbiased rate", " font-size=\"13\" fill=\"#444444\"");
     return svg + "</svg>\n";
 }
 

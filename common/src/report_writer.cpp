@@ -158,6 +158,24 @@ std::string convergence_csv(const Comparison& comparison) {
     return csv;
 }
 
+// time_to_accuracy.csv: one row per run and target, with the time read along slope -1 kept as a
+// number even where the report only says it lies beyond the extrapolation limit.
+std::string time_to_accuracy_csv(const Comparison& comparison) {
+    std::string csv = "integrator,target_relative_mse,seconds,how\n";
+    for (const IntegratorRun& run : comparison.runs) {
+        for (const TimeToAccuracy& t : run.time_to_accuracy) {
+            const bool finite = std::isfinite(t.seconds);
+            const char* how = t.measured      ? "measured"
+                              : !finite        ? "never"
+                              : t.beyond_limit ? "along slope -1 (beyond 10x the run's time)"
+                                               : "along slope -1";
+            csv += csv_text(run.integrator) + "," + csv_number(t.target) + "," + csv_number(finite ? t.seconds : -1.0) +
+                   "," + how + "\n";
+        }
+    }
+    return csv;
+}
+
 // Every image of the report: renders, reference, error maps, crops.
 void write_images(ReportFolder& files, const Comparison& comparison, const report::Layout& layout) {
     using report::ReferenceName;
@@ -195,6 +213,7 @@ void write_comparison_report(const Comparison& comparison, const std::string& fo
         files.write_text(report::PlotFile, report::convergence_plot_svg(comparison, report::SvgUse::File));
         files.write_text(report::ColourBarFile, report::colour_bar_svg(report::SvgUse::File));
         files.write_text(report::CsvFile, convergence_csv(comparison));
+        files.write_text(report::TimesCsvFile, time_to_accuracy_csv(comparison));
         files.write_text("report.md", report::comparison_markdown(comparison, layout));
         // Last, because it embeds the PNG files written above.
         files.write_text("report.html", report::comparison_html(comparison, layout, folder));

@@ -9,7 +9,9 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 using namespace freezeray;
@@ -47,19 +49,94 @@ std::vector<std::string> lines_of(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("a line through known points is fitted exactly, and times to accuracy follow it", "[unit][compare]") {
+namespace {
+
+// Checkpoints at 1, 2, 4, ... 2^(n-1) seconds with relMSE error(t), measured against a reference.
+std::vector<Checkpoint> series(int n, const std::function<double(double)>& error) {
+    std::vector<Checkpoint> checkpoints;
+    for (int i = 0; i < n; ++i) {
+        const double t = std::ldexp(1.0, i);
+        checkpoints.push_back({t, std::uint64_t(1) << i, -1.0, error(t), -1.0});
+    }
+    return checkpoints;
+}
+
+}  // namespace
+
+TEST_CASE("a clean 1/t series is fitted exactly, with -1 in its interval, and times follow it", "[unit][compare]") {
     // relMSE = 0.5 / t: slope -1, intercept log10(0.5).
     std::vector<Checkpoint> checkpoints;
     for (double t : {0.01, 0.1, 0.2, 0.4, 0.8, 1.6}) checkpoints.push_back({t, 1, -1.0, 0.5 / t, -1.0});
     const ConvergenceFit fit = fit_convergence(checkpoints);
     CHECK(fit.points == 5);  // the first checkpoint is left out
     CHECK(fit.slope == Approx(-1.0));
+    CHECK(fit.slope_low == Approx(-1.0));  // every pairwise slope is -1
+    CHECK(fit.slope_high == Approx(-1.0));
+    CHECK(fit.agrees_with_unbiased_rate());
     CHECK(fit.predict(10.0) == Approx(0.05));
-    const auto times = times_to_accuracy(checkpoints, fit, {1.0, 1e-2});
+    const auto times = times_to_accuracy(checkpoints, {1.0, 1e-2, 1e-3});
     CHECK(times[0].measured);  // 0.5 / 0.4 = 1.25 > 1 and 0.5 / 0.8 = 0.625 <= 1
     CHECK(times[0].seconds == Approx(0.5).epsilon(1e-6));  // interpolated between 0.4 and 0.8
     CHECK_FALSE(times[1].measured);
-    CHECK(times[1].seconds == Approx(50.0));      // extrapolated: 0.5 / t = 0.01
+    CHECK(times[1].seconds == Approx(50.0));  // along slope -1: 0.5 / t = 0.01
+    CHECK(times[1].beyond_limit);             // 50 s is more than 10 x the run's 1.6 s
+    CHECK(times[2].seconds == Approx(500.0)); // kept as a number, for the CSV
+    CHECK(times[2].beyond_limit);
+}
+
+TEST_CASE("a time read along slope -1 within ten times the run is a number, beyond it is not", "[unit][compare]") {
+    // 0.08 / t at 1 ... 32 s reaches 0.0025 at 32 s; 1e-3 needs 80 s (2.5 x the run), 1e-4 800 s (25 x).
+    const auto times = times_to_accuracy(series(6, [](double t) { return 0.08 / t; }), {1e-3, 1e-4});
+    CHECK_FALSE(times[0].measured);
+    CHECK(times[0].seconds == Approx(80.0));
+    CHECK_FALSE(times[0].beyond_limit);
+    CHECK(times[1].seconds == Approx(800.0));
+    CHECK(times[1].beyond_limit);
+}
+
+TEST_CASE("one firefly does not move the robust fit, which least squares would tilt", "[unit][compare]") {
+    // 1/t, but the checkpoint at 32 s caught a firefly that multiplies its error by 8.
+    auto checkpoints = series(8, [](double t) { return 1.0 / t; });
+    checkpoints[5].relative_mse *= 8.0;
+    const ConvergenceFit fit = fit_convergence(checkpoints);
+    REQUIRE(fit.points == 7);
+    CHECK(fit.slope == Approx(-1.0));  // 15 of the 21 pairwise slopes are exactly -1
+    CHECK(fit.agrees_with_unbiased_rate());
+    // The least-squares slope through the same points, for contrast: noticeably flatter.
+    std::vector<double> x, y;
+    for (std::size_t i = 1; i < checkpoints.size(); ++i) {
+        x.push_back(std::log10(checkpoints[i].seconds));
+        y.push_back(std::log10(checkpoints[i].relative_mse));
+    }
+    CHECK(fit_line(x, y).slope > -0.95);  // -1 + 3 (5 - 4) / 28 = -0.89 in units of log10 2
+    // The time to 1e-3 along slope -1 is placed by the median: the firefly does not move it either.
+    const auto times = times_to_accuracy(checkpoints, {1e-3});
+    CHECK(times[0].seconds == Approx(1000.0));
+}
+
+TEST_CASE("a rising error is fitted with a positive slope and flagged as not the unbiased rate", "[unit][compare]") {
+    // An estimate that grows as rare bright paths are found: 0.02 t^0.3.
+    const ConvergenceFit fit = fit_convergence(series(7, [](double t) { return 0.02 * std::pow(t, 0.3); }));
+    REQUIRE(fit.points == 6);
+    CHECK(fit.slope == Approx(0.3));
+    CHECK(fit.slope_low > -1.0);
+    CHECK_FALSE(fit.agrees_with_unbiased_rate());
+}
+
+TEST_CASE("too few checkpoints, or too short a span of time, give no fit and say why", "[unit][compare]") {
+    const auto two = fit_convergence(series(3, [](double t) { return 1.0 / t; }));  // the first is left out
+    CHECK(two.points == 0);
+    CHECK(two.no_fit_reason == "2 checkpoints, 4 needed");
+    CHECK_FALSE(two.agrees_with_unbiased_rate());
+    std::vector<Checkpoint> short_span;
+    for (double t : {1.0, 1.5, 2.0, 2.5, 3.0, 3.5}) short_span.push_back({t, 1, -1.0, 1.0 / t, -1.0});
+    const auto close = fit_convergence(short_span);
+    CHECK(close.points == 0);
+    CHECK(close.no_fit_reason == "checkpoints span 2.3x in time, 4x needed");
+    // Times to accuracy still read along slope -1 from what there is.
+    const auto times = times_to_accuracy(short_span, {0.1});
+    CHECK(times[0].seconds == Approx(10.0));
+    CHECK_FALSE(times[0].beyond_limit);  // 10 s is within 10 x the run's 3.5 s
 }
 
 TEST_CASE("compare renders every integrator with monotone checkpoints and consistent metrics", "[unit][compare]") {
@@ -110,6 +187,29 @@ TEST_CASE("the report's CSV and table agree with the runs", "[unit][compare]") {
     std::ifstream md(request.out_folder + "/report.md");
     const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
     for (const IntegratorRun& run : comparison.runs) CHECK_THAT(text, Catch::Contains(run.integrator));
+}
+
+TEST_CASE("with a time budget too, the last checkpoint is the final image", "[unit][compare]") {
+    TemporaryFolder folder;
+    CompareRequest request = furnace_request(folder);
+    request.integrators = {"pt-mis", "bdpt"};  // a per-pixel integrator and a splatting one
+    request.samples_per_pixel = 0;
+    request.time_seconds = 0.3;
+    const Comparison comparison = run_comparison(request, testing::full_registry());
+    for (const IntegratorRun& run : comparison.runs) {
+        INFO(run.integrator);
+        REQUIRE_FALSE(run.checkpoints.empty());
+        const Checkpoint& last = run.checkpoints.back();
+        CHECK(last.samples_per_pixel == run.result.samples_per_pixel);
+        CHECK(last.relative_mse == Approx(run.relative_mse));
+        CHECK(last.estimated_relative_mse == Approx(run.result.estimated_relative_mse));
+        CHECK(last.seconds <= run.result.seconds);
+    }
+    // The times file: one row per run and target, as the report's table.
+    write_comparison_report(comparison, request.out_folder);
+    const auto times = lines_of(request.out_folder + "/time_to_accuracy.csv");
+    REQUIRE(times.size() == 1 + 2 * comparison.runs.size());
+    CHECK(times[0] == "integrator,target_relative_mse,seconds,how");
 }
 
 TEST_CASE("compare refuses bad input before rendering and writes nothing", "[unit][compare]") {

@@ -21,24 +21,37 @@ struct Checkpoint {
     double estimated_relative_mse = -1.0;  // from the film's per-pixel variance (no reference)
 };
 
-// A straight line fitted to log10(relMSE) against log10(seconds) by least squares: an unbiased
-// Monte Carlo estimator has slope -1 once the per-sample cost is steady.
+// The line log10(relMSE) = intercept + slope log10(seconds) through a run's checkpoints, fitted
+// robustly: the Theil-Sen estimator (Theil 1950; Sen 1968), whose slope is the median of the
+// slopes between every pair of checkpoints, so that one firefly moves it little, with Sen's 95%
+// confidence interval. An unbiased Monte Carlo estimator has slope -1 once the per-sample cost is
+// steady; a fit whose interval excludes -1 signals fireflies still being found, bias, or a
+// reference that is itself not converged.
 struct ConvergenceFit {
+    static constexpr int MinimumPoints = 4;          // checkpoints a fit needs
+    static constexpr double MinimumTimeSpan = 4.0;   // and the ratio of their last to first time
+
     double slope = 0.0;
-    double intercept = 0.0;  // log10(relMSE) at 1 second
-    int points = 0;          // checkpoints used (0: no fit)
+    double intercept = 0.0;               // log10(relMSE) at 1 second
+    double slope_low = 0.0, slope_high = 0.0;  // the slope's 95% confidence interval
+    int points = 0;                       // checkpoints used (0: no fit)
+    std::string no_fit_reason;            // why there is no fit, when points == 0
     // The relMSE the fitted line predicts after `seconds`.
     double predict(double seconds) const;
-    // The time the fitted line needs to reach `relative_mse` (infinite when it never does).
-    double time_to_reach(double relative_mse) const;
+    // Whether -1, the unbiased rate, lies within the slope's confidence interval.
+    bool agrees_with_unbiased_rate() const { return points > 0 && slope_low <= -1.0 && -1.0 <= slope_high; }
 };
 
 // When a run reaches a target relMSE: measured (interpolated between checkpoints) when it got
-// there, else extrapolated from the fit.
+// there; else read along the line of slope -1 through its checkpoints (the rate of an unbiased
+// estimator), which is shown as a number only within ExtrapolationLimit times the run's time.
 struct TimeToAccuracy {
+    static constexpr double ExtrapolationLimit = 10.0;
+
     double target = 0.0;
-    double seconds = 0.0;   // infinite if the fit never reaches it
+    double seconds = 0.0;          // infinite when nothing was measured to read a line from
     bool measured = false;
+    bool beyond_limit = false;     // extrapolated beyond ExtrapolationLimit x the run's time
 };
 
 struct IntegratorRun {
@@ -104,11 +117,12 @@ struct Line {
 Line fit_line(const std::vector<double>& x, const std::vector<double>& y);
 
 // Fits the checkpoints (those with a measured or else estimated relMSE > 0, skipping the very
-// first pass whose time is dominated by start-up).
+// first pass whose time is dominated by start-up): no fit from fewer than MinimumPoints of them
+// or from a span of less than MinimumTimeSpan in time.
 ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints);
 
-// Time to reach each target relMSE.
-std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints, const ConvergenceFit& fit,
+// Time to reach each target relMSE (see TimeToAccuracy); the run's time is its last checkpoint's.
+std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints,
                                               const std::vector<double>& targets);
 
 // The `count` square regions of side `size` where the renders' mean relative error against
