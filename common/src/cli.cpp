@@ -49,7 +49,13 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     std::cout << "lights:     " << scene.lights.size() << " (" << area_lights << " area, "
               << scene.lights.size() - area_lights << " from the \"lights\" array";
     if (scene.environment != nullptr) std::cout << ", one of them the environment";
-    std::cout << ")\n";
+    std::cout << ")";
+    // Before chapter 03 nothing samples lights: emissive triangles are lit only by the paths
+    // that happen to hit them, so they are emitters but not (sampled) area lights.
+    if (area_lights == 0 && !scene.emissive_triangles.empty())
+        std::cout << "; the " << scene.emissive_triangles.size()
+                  << " emissive triangles become area lights from chapter 03 on, which samples them";
+    std::cout << "\n";
     std::cout << "accelerator: " << scene.accelerator_name << "\n";
     for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
     std::cout << "effects:\n" << scene.effects.describe();
@@ -95,6 +101,8 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     CLI::App app{"FreezeRay " + registry.program() + ": the renderer of chapters 01 to " + two_digit(registry.chapter()) +
                  " of the course"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "FreezeRay " + registry.program() + " " + FREEZERAY_VERSION + " (chapters 01 to " +
+                                          two_digit(registry.chapter()) + ")");
 
     RenderOptions render;
     std::string integrators;
@@ -164,7 +172,8 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        const int status = app.exit(e);  // prints the help, the version, or what is wrong
+        return status == 0 ? 0 : 1;       // --help and --version succeed; every usage error is exit status 1
     }
 
     try {

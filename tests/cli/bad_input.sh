@@ -13,7 +13,7 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 
 # expect_failure NAME EXPECTED_TEXT... -- ARGS: runs the renderer with ARGS (output to
-# $work/out.png unless ARGS say otherwise) and checks exit status, message and output.
+# $work/out.png unless ARGS say otherwise) and checks exit status (1), message and output.
 expect_failure() {
     local name=$1; shift
     local expected=()
@@ -24,7 +24,7 @@ expect_failure() {
     message=$("$renderer" "$@" 2>&1 >/dev/null)
     status=$?
     local ok=1
-    if [ $status -eq 0 ]; then echo "FAIL [$name]: exit status 0"; ok=0; fi
+    if [ $status -ne 1 ]; then echo "FAIL [$name]: exit status $status, not 1 (README: every usage error is 1)"; ok=0; fi
     for text in "${expected[@]}"; do
         if ! grep -qF -- "$text" <<<"$message"; then echo "FAIL [$name]: message lacks '$text'"; ok=0; fi
     done
@@ -164,6 +164,18 @@ expect_failure "negative time" "--time" -- render "$work/good.json" --time -1 --
 expect_failure "output under a file, not a folder" "good.json/out.png" "not a folder" -- render "$work/good.json" --out "$work/good.json/out.png"
 mkdir -p "$work/folder.png"
 expect_failure "output path that is a folder" "folder.png" "is a folder" -- render "$work/good.json" --out "$work/folder.png"
+
+# Usage errors of the command line itself: exit status 1 as well (not the parser's own codes).
+expect_failure "unknown option" "--bogus" -- render "$work/good.json" --bogus --out "$work/out.png"
+expect_failure "no subcommand" "subcommand" --
+expect_failure "no scene" "scene is required" -- render --out "$work/out.png"
+expect_failure "--time with --spp" "--time" "--spp" -- render "$work/good.json" --time 1 --spp 4 --out "$work/out.png"
+version=$("$renderer" --version 2>&1); status=$?
+if [ $status -eq 0 ] && grep -q "^FreezeRay .* [0-9][0-9.]* (chapters 01 to" <<<"$version"; then
+    echo "ok   [--version] (exit 0): $version"
+else
+    echo "FAIL [--version]: exit $status, printed '$version'"; failures=$((failures + 1))
+fi
 
 if [ $failures -ne 0 ]; then echo "$failures bad-input case(s) failed"; exit 1; fi
 echo "every bad-input case was refused cleanly"
