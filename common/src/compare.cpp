@@ -11,12 +11,16 @@
 #include "freezeray/scene.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 namespace freezeray {
 
 namespace {
+
+// How far past an equal-time budget a run may go before the report mentions it.
+constexpr double OvershootTolerance = 1.05;
 
 // The output folder must be creatable: its parent exists and is a folder.
 void check_output_folder(const std::string& folder) {
@@ -81,6 +85,7 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
         std::snprintf(budget, sizeof budget, "equal samples: %llu spp each",
                       static_cast<unsigned long long>(request.samples_per_pixel));
     comparison.budget = budget;
+    comparison.equal_time = request.time_seconds > 0.0;
     if (!request.reference.empty()) {
         Image reference = read_image(request.reference);
         if (reference.width() != scene.camera->width() || reference.height() != scene.camera->height())
@@ -120,8 +125,16 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
             }
             run.checkpoints.push_back(c);
         };
-        Progress progress(request.quiet);
+        Progress progress(request.quiet, run.integrator);
         run.result = integrators[i]->render(scene, run_settings, progress);
+        // A pass that cannot be cut (one sample per pixel, a batch of splatted paths) can run past
+        // the budget: then the comparison is not quite at equal time, and the report says so.
+        if (request.time_seconds > 0.0 && run.result.seconds > OvershootTolerance * request.time_seconds) {
+            char text[160];
+            std::snprintf(text, sizeof text, "ran %.2f s of its %g s budget (%+.0f%%): its errors are for that time",
+                          run.result.seconds, request.time_seconds, 100.0 * (run.result.seconds / request.time_seconds - 1.0));
+            run.result.warnings.push_back(text);
+        }
         if (comparison.reference) {
             run.mse = mse(run.result.image, *comparison.reference);
             run.relative_mse = relative_mse(run.result.image, *comparison.reference);

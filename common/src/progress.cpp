@@ -1,8 +1,10 @@
 // The progress line.
 #include "freezeray/progress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <unistd.h>
 
 namespace freezeray {
@@ -22,7 +24,8 @@ std::string format_duration(double seconds) {
     return buffer;
 }
 
-Progress::Progress(bool quiet) : quiet_(quiet), terminal_(isatty(STDERR_FILENO) != 0) {
+Progress::Progress(bool quiet, std::string subject)
+    : quiet_(quiet), terminal_(isatty(STDERR_FILENO) != 0), subject_(std::move(subject)) {
     start_ = last_print_ = std::chrono::steady_clock::now();
 }
 
@@ -65,9 +68,17 @@ void Progress::print(bool final_line) {
     if (total_work_ > 0 && rate > 0.0) remaining = (static_cast<double>(total_work_) - done) / rate;
     else if (total_seconds_ > 0.0) remaining = total_seconds_ - elapsed;
 
-    char line[256];
-    int n = std::snprintf(line, sizeof line, "%s: %.3g samples/s, elapsed %s", label_.c_str(), rate,
-                          format_duration(elapsed).c_str());
+    // How far: the share of the samples, or of the time budget.
+    double fraction = -1.0;
+    if (total_work_ > 0) fraction = done / static_cast<double>(total_work_);
+    else if (total_seconds_ > 0.0) fraction = elapsed / total_seconds_;
+    char line[320];
+    int n = std::snprintf(line, sizeof line, "%s: ", subject_.empty() ? label_.c_str() : subject_.c_str());
+    if (fraction >= 0.0 && n > 0)
+        n += std::snprintf(line + n, sizeof line - n, "%3.0f%% of %s, ", 100.0 * std::min(fraction, 1.0),
+                           total_work_ > 0 ? "its samples" : "its time");
+    if (n > 0 && n < static_cast<int>(sizeof line))
+        n += std::snprintf(line + n, sizeof line - n, "%.3g samples/s, elapsed %s", rate, format_duration(elapsed).c_str());
     if (!final_line && remaining >= 0.0 && n > 0 && n < static_cast<int>(sizeof line))
         n += std::snprintf(line + n, sizeof line - n, ", left %s", format_duration(remaining).c_str());
     const double error = estimated_error_.load();

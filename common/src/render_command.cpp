@@ -171,7 +171,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     stop_requested.store(false);
     received_signal = 0;
     settings.stop_requested = &stop_requested;
-    Progress progress(options.quiet);
+    Progress progress(options.quiet, integrator_name);
     RenderResult result;
     {
         const SignalGuard guard;

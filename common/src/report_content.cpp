@@ -84,7 +84,9 @@ double shown_relative_mse(const IntegratorRun& run) {
 MetricsTable metrics_table(const Comparison& comparison) {
     MetricsTable table;
     table.headers = {"samples per pixel", "wall time (s)", "MSE", "relMSE", "SSIM", "efficiency 1/(relMSE·s)"};
-    const Better better[] = {Better::Nowhere, Better::Lower, Better::Lower, Better::Lower, Better::Higher, Better::Higher};
+    // At equal time every run took (about) the budget: its time is not a result, so not ranked.
+    const Better time_better = comparison.equal_time ? Better::Nowhere : Better::Lower;
+    const Better better[] = {Better::Nowhere, time_better, Better::Lower, Better::Lower, Better::Higher, Better::Higher};
     const bool compares_error[] = {false, false, false, true, false, true};  // measured and estimated differ
 
     std::vector<std::vector<double>> values;  // per row, per column; negative: none
@@ -229,8 +231,8 @@ std::vector<std::string> how_to_read(const Comparison& comparison) {
         "still being found, bias, or a reference that is itself not converged. "
         "Time to accuracy reads the curves at a target error: measured when the run got there, else read along "
         "the line of slope −1 through its checkpoints, and given as a number only up to 10× the run's time.",
-        "Best in each column is marked: lowest time, MSE and relMSE; highest SSIM (structural similarity, "
-        "1 is identical) and efficiency."};
+        std::string("Best in each column is marked: ") + (comparison.equal_time ? "" : "lowest time, ") +
+            "lowest MSE and relMSE; highest SSIM (structural similarity, 1 is identical) and efficiency."};
     if (!comparison.reference) {
         paragraphs.push_back(
             "There is no reference: each relMSE is estimated from the render's own per-pixel variance, which "

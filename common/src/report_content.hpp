@@ -68,8 +68,8 @@ struct MetricsTable {
 };
 
 // The table: samples per pixel, wall time, MSE, relMSE, SSIM, efficiency. Best per column:
-// lowest time, MSE and relMSE; highest SSIM and efficiency (only when two runs or more have a
-// value; a measured relMSE is never compared with an estimated one).
+// lowest time (at equal samples only), MSE and relMSE; highest SSIM and efficiency (only when
+// two runs or more have a value; a measured relMSE is never compared with an estimated one).
 MetricsTable metrics_table(const Comparison& comparison);
 
 // Times to reach each target relMSE: targets in the order the runs give them, and per run one

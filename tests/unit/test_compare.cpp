@@ -212,6 +212,24 @@ TEST_CASE("with a time budget too, the last checkpoint is the final image", "[un
     CHECK(times[0] == "integrator,target_relative_mse,seconds,how");
 }
 
+TEST_CASE("a run that overshoots its time budget says so", "[unit][compare]") {
+    // One pass (one sample in each of 128 x 128 pixels of the Cornell box) cannot be cut, and takes
+    // far longer than a budget of a millisecond.
+    TemporaryFolder folder;
+    CompareRequest request;
+    request.scene = testing::scene_path("cornell-box/scene.json");
+    request.integrators = {"pt-mis"};
+    request.time_seconds = 0.001;
+    request.width = request.height = 128;
+    request.quiet = true;
+    request.out_folder = folder.file("report");
+    const Comparison comparison = run_comparison(request, testing::full_registry());
+    const RenderResult& result = comparison.runs[0].result;
+    REQUIRE(result.seconds > 0.00105);
+    REQUIRE(result.warnings.size() == 1u);
+    CHECK_THAT(result.warnings[0], Catch::Contains("of its 0.001 s budget"));
+}
+
 TEST_CASE("compare refuses bad input before rendering and writes nothing", "[unit][compare]") {
     TemporaryFolder folder;
     auto refused = [&](CompareRequest request, const std::string& expected) {

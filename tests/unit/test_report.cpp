@@ -100,7 +100,7 @@ Comparison make_comparison(bool has_reference = true) {
     Comparison comparison;
     comparison.scene = "scenes/cornell-box/scene.json";
     comparison.renderer = "ch03";
-    comparison.budget = "equal time: 0.07 s each";
+    comparison.budget = "passes of 1 ms and 2.5 ms per sample";  // neither equal time nor equal samples: time is ranked
     if (has_reference) {
         comparison.reference = reference;
         comparison.reference_description = "reference.exr (4096 spp)";
@@ -273,6 +273,18 @@ TEST_CASE("report.html marks the best values in the right rows", "[unit][report]
     CHECK(count(row_of("pt-naive"), "class=\"best\"") == 1);  // time
     CHECK(count(row_of("pt-mis"), "class=\"best\"") == 4);    // MSE, relMSE, SSIM, efficiency
     CHECK(count(row_of("pt-mis"), "★") == 4);
+}
+
+TEST_CASE("at equal time the wall time is not ranked: every run took the budget", "[unit][report]") {
+    TemporaryFolder temporary;
+    Comparison comparison = make_comparison();
+    comparison.equal_time = true;
+    write_comparison_report(comparison, temporary.file("report"));
+    const std::string markdown = read_text(temporary.file("report/report.md"));
+    CHECK_FALSE(bold(markdown_row(markdown, "## Results", "pt-naive")[2]));
+    CHECK_FALSE(bold(markdown_row(markdown, "## Results", "pt-mis")[2]));
+    CHECK(bold(markdown_row(markdown, "## Results", "pt-mis")[4]));  // relMSE still is
+    CHECK(markdown.find("lowest time") == std::string::npos);
 }
 
 TEST_CASE("the error-versus-time plot has a line per run and each slope in its legend", "[unit][report]") {

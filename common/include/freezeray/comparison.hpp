@@ -79,6 +79,7 @@ struct Comparison {
     std::string scene;                   // the scene file
     std::string renderer;                // program name (ch03, freezeray)
     std::string budget;                  // "equal time: 10 s each" or "equal samples: 64 spp each"
+    bool equal_time = false;             // the budget is time (then time is not a result to rank)
     std::optional<Image> reference;      // absent: errors are estimated from the variance
     std::string reference_description;   // file and its sample count, when known
     std::vector<IntegratorRun> runs;

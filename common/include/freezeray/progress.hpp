@@ -1,5 +1,5 @@
-// The progress line of a long render: samples per second, elapsed time, time left, and the
-// estimated error. Written to standard error, refreshed in place on a terminal; on a pipe only
+// The progress line of a long render: what is rendered, how far (percent of its samples or of
+// its time), samples per second, elapsed time, time left, and the estimated error. Written to standard error, refreshed in place on a terminal; on a pipe only
 // the final summary is printed, so logs stay readable.
 #pragma once
 
@@ -13,8 +13,9 @@ namespace freezeray {
 
 class Progress {
 public:
-    // quiet: print nothing at all (tests, compare).
-    explicit Progress(bool quiet = false);
+    // quiet: print nothing at all (tests). `subject` names what is rendered (the integrator),
+    // at the start of the line; without one the phase's label stands there.
+    explicit Progress(bool quiet = false, std::string subject = "");
 
     // A new phase of `total_work` units (samples), or of `seconds` wall time when total_work is 0.
     void start(const std::string& label, std::uint64_t total_work, double seconds = 0.0);
@@ -32,6 +33,7 @@ private:
 
     bool quiet_;
     bool terminal_;
+    std::string subject_;
     std::string label_;
     std::uint64_t total_work_ = 0;
     double total_seconds_ = 0.0;
