@@ -10,10 +10,12 @@
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string>
 
 namespace freezeray {
 
@@ -44,6 +46,39 @@ std::string describe_reference(const std::string& path, const Image& reference) 
         text += ")";
     }
     return text;
+}
+
+// A number from an image's header (negative when it is absent or not a number).
+double header_number(const Image& image, const std::string& key) {
+    const auto it = image.metadata.find(key);
+    if (it == image.metadata.end()) return -1.0;
+    try {
+        return std::stod(it->second);
+    } catch (const std::exception&) {
+        return -1.0;
+    }
+}
+
+// A reference rendered from the runs' own random numbers (same seed, overlapping sample
+// indices) shares their noise: errors against it come out too small. Refused when its header
+// shows it; a warning when the header does not say.
+void check_reference_independent(const CompareRequest& request, const Image& reference, bool quiet) {
+    const double seed = header_number(reference, "freezeray:seed");
+    if (seed < 0.0) {
+        if (!quiet)
+            std::cerr << "warning: " << request.reference << " does not say which seed it was rendered with: "
+                      << "make sure it is not " << request.seed << ", this comparison's, or its errors come out too small\n";
+        return;
+    }
+    const double offset = std::max(0.0, header_number(reference, "freezeray:sample_offset"));
+    if (static_cast<std::uint64_t>(seed) != request.seed) return;
+    // The runs draw samples 0, 1, 2, ... of their seed; the reference from `offset` on.
+    const bool overlaps = request.time_seconds > 0.0 || offset < static_cast<double>(request.samples_per_pixel);
+    if (overlaps)
+        throw InputError(request.reference, "was rendered with seed " + std::to_string(request.seed) +
+                                                ", this comparison's, from sample " + std::to_string(static_cast<std::uint64_t>(offset)) +
+                                                " on: its noise is the runs' own, so errors against it are too small "
+                                                "(render it with another --seed, or give compare another --seed)");
 }
 
 }  // namespace
@@ -94,6 +129,8 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
                                                     std::to_string(scene.camera->width()) + "x" +
                                                     std::to_string(scene.camera->height()));
         comparison.reference_description = describe_reference(request.reference, reference);
+        check_reference_independent(request, reference, request.quiet);
+        comparison.reference_relative_mse = header_number(reference, "freezeray:estimated_relative_mse");
         comparison.reference = std::move(reference);
     } else {
         comparison.reference_description = "none: errors are estimated from each render's per-pixel variance";
@@ -137,7 +174,8 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
         }
         if (comparison.reference) {
             run.mse = mse(run.result.image, *comparison.reference);
-            run.relative_mse = relative_mse(run.result.image, *comparison.reference);
+            run.raw_relative_mse = relative_mse(run.result.image, *comparison.reference);
+            run.relative_mse = less_reference_noise(run.raw_relative_mse, comparison.reference_relative_mse);
             run.ssim = ssim(run.result.image, *comparison.reference);
             run.mape = mape(run.result.image, *comparison.reference);
         } else {
@@ -153,12 +191,12 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
             last.estimated_relative_mse = run.result.estimated_relative_mse;
             if (comparison.reference) {
                 last.mse = run.mse;
-                last.relative_mse = run.relative_mse;
+                last.relative_mse = run.raw_relative_mse;
             }
             run.checkpoints.push_back(last);
         }
-        run.fit = fit_convergence(run.checkpoints);
-        run.time_to_accuracy = times_to_accuracy(run.checkpoints, {1e-2, 1e-3});
+        run.fit = fit_convergence(run.checkpoints, comparison.reference_relative_mse);
+        run.time_to_accuracy = times_to_accuracy(run.checkpoints, {1e-2, 1e-3}, comparison.reference_relative_mse);
         if (run.result.invalid_samples > 0 && !request.quiet)
             std::cerr << "warning: " << run.integrator << " produced " << run.result.invalid_samples
                       << " invalid (NaN, infinite or negative) samples\n";

@@ -13,10 +13,23 @@ namespace freezeray {
 
 namespace {
 
-// The relMSE a checkpoint contributes to fits: measured when there is a reference.
-double checkpoint_error(const Checkpoint& c) { return c.relative_mse >= 0.0 ? c.relative_mse : c.estimated_relative_mse; }
+// The relMSE a checkpoint contributes to fits: measured when there is a reference (less the
+// reference's own, and none below the reference's floor), else estimated.
+double checkpoint_error(const Checkpoint& c, double reference_relative_mse) {
+    if (c.relative_mse < 0.0) return c.estimated_relative_mse;
+    const double error = less_reference_noise(c.relative_mse, reference_relative_mse);
+    return error >= reference_floor(reference_relative_mse) && error > 0.0 ? error : -1.0;
+}
 
 }  // namespace
+
+double less_reference_noise(double measured_relative_mse, double reference_relative_mse) {
+    return reference_relative_mse > 0.0 ? measured_relative_mse - reference_relative_mse : measured_relative_mse;
+}
+
+double reference_floor(double reference_relative_mse) {
+    return reference_relative_mse > 0.0 ? ReferenceMargin * reference_relative_mse : 0.0;
+}
 
 Line fit_line(const std::vector<double>& x, const std::vector<double>& y) {
     const std::size_t count = std::min(x.size(), y.size());
@@ -49,10 +62,10 @@ struct LogPoints {
     std::vector<double> x, y;
 };
 
-LogPoints log_points(const std::vector<Checkpoint>& checkpoints) {
+LogPoints log_points(const std::vector<Checkpoint>& checkpoints, double reference_relative_mse) {
     LogPoints points;
     for (std::size_t i = 1; i < checkpoints.size(); ++i) {
-        const double error = checkpoint_error(checkpoints[i]);
+        const double error = checkpoint_error(checkpoints[i], reference_relative_mse);
         if (error > 0.0 && checkpoints[i].seconds > 0.0 && std::isfinite(error)) {
             points.x.push_back(std::log10(checkpoints[i].seconds));
             points.y.push_back(std::log10(error));
@@ -70,8 +83,8 @@ double median(std::vector<double> values) {
 }  // namespace
 
 // BOOK(fit-convergence)
-ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints) {
-    const LogPoints p = log_points(checkpoints);
+ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, double reference_relative_mse) {
+    const LogPoints p = log_points(checkpoints, reference_relative_mse);
     ConvergenceFit fit;
     const std::size_t n = p.x.size();
     if (n < static_cast<std::size_t>(ConvergenceFit::MinimumPoints)) {
@@ -118,10 +131,10 @@ ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints) {
 
 // BOOK(time-to-accuracy)
 std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints,
-                                              const std::vector<double>& targets) {
+                                              const std::vector<double>& targets, double reference_relative_mse) {
     // The line of slope -1 through the checkpoints: log10(relMSE x seconds) is constant along it,
     // and its median over the checkpoints places it (robust to a firefly, as the fit is).
-    const LogPoints p = log_points(checkpoints);
+    const LogPoints p = log_points(checkpoints, reference_relative_mse);
     std::vector<double> products;
     for (std::size_t i = 0; i < p.x.size(); ++i) products.push_back(p.x[i] + p.y[i]);
     const double run_seconds = checkpoints.empty() ? 0.0 : checkpoints.back().seconds;
@@ -129,17 +142,23 @@ std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& che
     for (double target : targets) {
         TimeToAccuracy t;
         t.target = target;
+        if (target < reference_floor(reference_relative_mse)) {
+            t.below_reference_floor = true;
+            t.seconds = std::numeric_limits<double>::quiet_NaN();
+            result.push_back(t);
+            continue;
+        }
         t.seconds = products.empty() ? std::numeric_limits<double>::infinity()
                                      : std::pow(10.0, median(products) - std::log10(target));
         // Measured: the first checkpoint at or below the target, interpolated log-linearly from
         // the one before it.
         for (std::size_t i = 0; i < checkpoints.size(); ++i) {
-            const double error = checkpoint_error(checkpoints[i]);
+            const double error = checkpoint_error(checkpoints[i], reference_relative_mse);
             if (error > 0.0 && error <= target) {
                 t.measured = true;
                 t.seconds = checkpoints[i].seconds;
                 if (i > 0) {
-                    const double e0 = checkpoint_error(checkpoints[i - 1]);
+                    const double e0 = checkpoint_error(checkpoints[i - 1], reference_relative_mse);
                     const double t0 = checkpoints[i - 1].seconds;
                     if (e0 > target && t0 > 0.0 && e0 > error) {
                         const double s = (std::log10(e0) - std::log10(target)) / (std::log10(e0) - std::log10(error));

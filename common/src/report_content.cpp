@@ -95,9 +95,12 @@ MetricsTable metrics_table(const Comparison& comparison) {
         const double relative = shown_relative_mse(run);
         double efficiency = run.efficiency;
         if (!has_value(efficiency) && relative > 0.0 && seconds > 0.0) efficiency = 1.0 / (relative * seconds);
+        // Below the reference's floor the relMSE (and so the efficiency) is not known, only bounded.
+        const double floor = reference_floor(comparison.reference_relative_mse);
+        const bool below_floor = !run.error_is_estimated && floor > 0.0 && run.relative_mse < floor;
         values.push_back({static_cast<double>(run.result.samples_per_pixel), seconds,
-                          run.error_is_estimated ? -1.0 : run.mse, relative, run.error_is_estimated ? -1.0 : run.ssim,
-                          efficiency});
+                          run.error_is_estimated ? -1.0 : run.mse, below_floor ? -1.0 : relative,
+                          run.error_is_estimated ? -1.0 : run.ssim, below_floor ? -1.0 : efficiency});
         TableRow row;
         row.integrator = run.integrator;
         row.estimated = run.error_is_estimated;
@@ -105,6 +108,8 @@ MetricsTable metrics_table(const Comparison& comparison) {
             const double value = values.back()[column];
             std::string text = column == 0 ? std::to_string(run.result.samples_per_pixel) : format_number(value);
             if (column == 3 && run.error_is_estimated && has_value(value)) text += " (estimated)";
+            if (column == 3 && below_floor) text = "< " + format_number(floor) + " †";
+            if (column == 5 && below_floor && seconds > 0.0) text = "> " + format_number(1.0 / (floor * seconds)) + " †";
             row.cells.push_back({text, false});
         }
         table.rows.push_back(row);
@@ -146,7 +151,9 @@ AccuracyTable accuracy_table(const Comparison& comparison) {
         for (const double target : table.targets) {
             const auto time = std::find_if(run.time_to_accuracy.begin(), run.time_to_accuracy.end(),
                                            [&](const TimeToAccuracy& t) { return t.target == target; });
-            if (time == run.time_to_accuracy.end() || std::isnan(time->seconds)) {
+            if (time != run.time_to_accuracy.end() && time->below_reference_floor) {
+                texts.push_back("† reference too noisy");
+            } else if (time == run.time_to_accuracy.end() || std::isnan(time->seconds)) {
                 texts.push_back("—");
             } else if (std::isinf(time->seconds)) {
                 texts.push_back("never (no checkpoint to read)");
@@ -207,6 +214,12 @@ std::vector<std::pair<std::string, std::string>> header_facts(const Comparison& 
     std::string reference = "none: every error is estimated from the render's own per-pixel variance";
     if (comparison.reference) {
         reference = comparison.reference_description.empty() ? "given" : comparison.reference_description;
+        if (comparison.reference_relative_mse > 0.0)
+            reference += "; its own estimated relMSE " + format_number(comparison.reference_relative_mse) +
+                         " is subtracted from every relMSE measured against it, and it is too noisy for errors below " +
+                         format_number(reference_floor(comparison.reference_relative_mse)) + " (marked †)";
+        else
+            reference += "; its header does not give its own error, so the errors below include its noise";
     }
     return {{"Scene", comparison.scene},
             {"Renderer", comparison.renderer},

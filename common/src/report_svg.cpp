@@ -74,8 +74,11 @@ std::string marker(std::size_t index, double x, double y, const std::string& col
 
 // The error a checkpoint is plotted at: measured when there is a reference, else estimated
 // (the same choice as the fit in comparison.cpp).
-double plotted_error(const Checkpoint& checkpoint) {
-    return checkpoint.relative_mse >= 0.0 ? checkpoint.relative_mse : checkpoint.estimated_relative_mse;
+// Measured errors less the reference's own, none below its floor (they are not known).
+double plotted_error(const Checkpoint& checkpoint, double reference_relative_mse) {
+    if (checkpoint.relative_mse < 0.0) return checkpoint.estimated_relative_mse;
+    const double error = less_reference_noise(checkpoint.relative_mse, reference_relative_mse);
+    return error >= reference_floor(reference_relative_mse) ? error : -1.0;
 }
 
 // The whole decades [low, high] that hold every value (at least one decade; `fallback` if none).
@@ -159,7 +162,7 @@ std::string convergence_plot_svg(const Comparison& comparison, SvgUse use) {
     for (const IntegratorRun& run : comparison.runs) {
         series.emplace_back();
         for (const Checkpoint& checkpoint : run.checkpoints) {
-            const double error = plotted_error(checkpoint);
+            const double error = plotted_error(checkpoint, comparison.reference_relative_mse);
             if (!(error > 0.0 && checkpoint.seconds > 0.0) || !std::isfinite(error) || !std::isfinite(checkpoint.seconds)) {
                 continue;
             }
@@ -200,6 +203,13 @@ std::string convergence_plot_svg(const Comparison& comparison, SvgUse use) {
     // them a grey guide of slope -1, the unbiased rate, through the middle of the first run's
     // checkpoints, to hold each line against.
     svg += "<g clip-path=\"url(#plot-area)\">\n";
+    const double floor = reference_floor(comparison.reference_relative_mse);
+    if (floor > 0.0 && !all_errors.empty()) {
+        // Below this line the reference's own noise hides the runs' errors.
+        svg += line_element(Left, axes.y(floor), Right, axes.y(floor), "stroke=\"#b2182b\" stroke-width=\"1\"");
+        svg += text_element(Right - 6, axes.y(floor) + 16, "reference too noisy below",
+                            " font-size=\"12\" fill=\"#b2182b\" text-anchor=\"end\"");
+    }
     for (const auto& points : series) {
         if (points.empty()) continue;
         const auto& [seconds, error] = points[points.size() / 2];

@@ -144,15 +144,29 @@ std::string csv_number(double value) {
     return text;
 }
 
+// A number that may be negative (a difference of errors).
+std::string csv_signed(double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.9g", value);
+    return text;
+}
+
 // convergence.csv: one row per checkpoint of every run, checkpoints numbered from 1.
 std::string convergence_csv(const Comparison& comparison) {
-    std::string csv = "integrator,checkpoint,seconds,samples_per_pixel,mse,relative_mse,estimated_relative_mse\n";
+    // relative_mse as measured against the reference; relative_mse_less_reference without the
+    // reference's own noise (empty when the reference does not give it).
+    std::string csv = "integrator,checkpoint,seconds,samples_per_pixel,mse,relative_mse,estimated_relative_mse,"
+                      "relative_mse_less_reference\n";
     for (const IntegratorRun& run : comparison.runs) {
         for (std::size_t i = 0; i < run.checkpoints.size(); ++i) {
             const Checkpoint& c = run.checkpoints[i];
             csv += csv_text(run.integrator) + "," + std::to_string(i + 1) + "," + csv_number(c.seconds) + "," +
                    std::to_string(c.samples_per_pixel) + "," + csv_number(c.mse) + "," + csv_number(c.relative_mse) +
-                   "," + csv_number(c.estimated_relative_mse) + "\n";
+                   "," + csv_number(c.estimated_relative_mse) + "," +
+                   (c.relative_mse >= 0.0 && comparison.reference_relative_mse > 0.0
+                        ? csv_signed(less_reference_noise(c.relative_mse, comparison.reference_relative_mse))
+                        : std::string()) +
+                   "\n";
         }
     }
     return csv;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <sstream>
 
 using namespace freezeray;
@@ -228,6 +229,66 @@ TEST_CASE("a run that overshoots its time budget says so", "[unit][compare]") {
     REQUIRE(result.seconds > 0.00105);
     REQUIRE(result.warnings.size() == 1u);
     CHECK_THAT(result.warnings[0], Catch::Contains("of its 0.001 s budget"));
+}
+
+TEST_CASE("a reference's own noise is subtracted, and what it cannot measure is left out", "[unit][compare]") {
+    // Measured against a reference whose own relMSE is 0.001: 1/t + 0.001. The floor is 0.01,
+    // so the checkpoints after 100 s are left out of the fit and 1e-3 is not read at all.
+    const double noise = 1e-3;
+    const auto checkpoints = series(10, [&](double t) { return 1.0 / t + noise; });  // 1 ... 512 s
+    CHECK(less_reference_noise(0.5, noise) == Approx(0.499));
+    CHECK(reference_floor(noise) == Approx(0.01));
+    CHECK(reference_floor(-1.0) == 0.0);  // unknown: no floor
+    const ConvergenceFit fit = fit_convergence(checkpoints, noise);
+    CHECK(fit.points == 6);  // 2 ... 64 s; the first is left out, and 128, 256, 512 s lie below the floor
+    CHECK(fit.slope == Approx(-1.0));
+    // Without the correction the same points bend towards the reference's noise: a flatter fit (-0.955).
+    CHECK(fit_convergence(checkpoints).slope > -0.96);
+    const auto times = times_to_accuracy(checkpoints, {0.05, 1e-3}, noise);
+    CHECK(times[0].measured);
+    CHECK(times[0].seconds == Approx(20.0).epsilon(0.05));  // 1/t = 0.05, between 16 and 32 s
+    CHECK(times[1].below_reference_floor);
+    CHECK_FALSE(times[1].measured);
+}
+
+TEST_CASE("a reference of the runs' own seed is refused; a noisy one marks what it cannot measure", "[unit][compare]") {
+    TemporaryFolder folder;
+    CompareRequest request = furnace_request(folder);
+    const auto write_reference = [&](const std::map<std::string, std::string>& header) {
+        Image image(8, 8, Spectrum(1.0f));
+        image.metadata = header;
+        write_image(request.reference, image);
+    };
+    SECTION("the same seed, from sample 0: its noise is the runs' own") {
+        write_reference({{"freezeray:seed", "3"}, {"freezeray:sample_offset", "0"}});
+        CHECK_THROWS_WITH(run_comparison(request, testing::full_registry()), Catch::Contains("seed 3, this comparison's"));
+    }
+    SECTION("the same seed from sample 16 on does not overlap 16 samples per pixel") {
+        write_reference({{"freezeray:seed", "3"}, {"freezeray:sample_offset", "16"}});
+        CHECK_NOTHROW(run_comparison(request, testing::full_registry()));
+    }
+    SECTION("at equal time any offset may be reached: refused") {
+        write_reference({{"freezeray:seed", "3"}, {"freezeray:sample_offset", "16"}});
+        request.samples_per_pixel = 0;
+        request.time_seconds = 0.1;
+        CHECK_THROWS_WITH(run_comparison(request, testing::full_registry()), Catch::Contains("seed 3"));
+    }
+    SECTION("another seed, too noisy for the errors it would measure") {
+        write_reference({{"freezeray:seed", "4"}, {"freezeray:estimated_relative_mse", "0.05"}});
+        const Comparison comparison = run_comparison(request, testing::full_registry());
+        CHECK(comparison.reference_relative_mse == Approx(0.05));
+        for (const IntegratorRun& run : comparison.runs) {
+            CHECK(run.relative_mse == Approx(run.raw_relative_mse - 0.05));
+            for (const TimeToAccuracy& t : run.time_to_accuracy) CHECK(t.below_reference_floor);  // 1e-2, 1e-3 < 0.5
+        }
+        write_comparison_report(comparison, request.out_folder);
+        const auto md = lines_of(request.out_folder + "/report.md");
+        std::string text;
+        for (const std::string& line : md) text += line + "\n";
+        CHECK_THAT(text, Catch::Contains("too noisy for errors below 0.5 (marked †)"));
+        CHECK_THAT(text, Catch::Contains("< 0.5 †"));
+        CHECK_THAT(text, Catch::Contains("† reference too noisy"));
+    }
 }
 
 TEST_CASE("compare refuses bad input before rendering and writes nothing", "[unit][compare]") {

@@ -17,9 +17,21 @@ struct Checkpoint {
     double seconds = 0.0;                  // render time so far, excluding the time spent measuring
     std::uint64_t samples_per_pixel = 0;
     double mse = -1.0;                     // against the reference; negative without one
-    double relative_mse = -1.0;            // against the reference; negative without one
+    double relative_mse = -1.0;            // against the reference, its noise included; negative without one
     double estimated_relative_mse = -1.0;  // from the film's per-pixel variance (no reference)
 };
+
+// A reference is itself a render with noise of its own. For a run x and a reference r whose
+// noises are independent, E[(x - r)^2] = E[(x - mu)^2] + Var r: the relMSE measured against r is
+// the run's own plus about the reference's own estimated relMSE, which is therefore subtracted.
+// What is left is trusted only down to ReferenceMargin times the reference's own relMSE.
+inline constexpr double ReferenceMargin = 10.0;
+
+// The run's relMSE from one measured against the reference: less the reference's own relMSE
+// (when known, i.e. >= 0).
+double less_reference_noise(double measured_relative_mse, double reference_relative_mse);
+// The smallest relMSE the reference can measure: ReferenceMargin times its own (0 when unknown).
+double reference_floor(double reference_relative_mse);
 
 // The line log10(relMSE) = intercept + slope log10(seconds) through a run's checkpoints, fitted
 // robustly: the Theil-Sen estimator (Theil 1950; Sen 1968), whose slope is the median of the
@@ -52,15 +64,18 @@ struct TimeToAccuracy {
     double seconds = 0.0;          // infinite when nothing was measured to read a line from
     bool measured = false;
     bool beyond_limit = false;     // extrapolated beyond ExtrapolationLimit x the run's time
+    bool below_reference_floor = false;  // a target the reference is too noisy to measure
 };
 
 struct IntegratorRun {
     std::string integrator;
     RenderResult result;                 // final image, variance, samples, time
     std::vector<Checkpoint> checkpoints; // in time order
-    // Final metrics against the reference (negative without a reference).
+    // Final metrics against the reference (negative without a reference). relative_mse is less the
+    // reference's own (less_reference_noise), raw_relative_mse as measured.
     double mse = -1.0;
     double relative_mse = -1.0;
+    double raw_relative_mse = -1.0;
     double ssim = -1.0;
     double mape = -1.0;
     double efficiency = -1.0;            // 1 / (relMSE x seconds), relMSE measured or estimated
@@ -82,6 +97,7 @@ struct Comparison {
     bool equal_time = false;             // the budget is time (then time is not a result to rank)
     std::optional<Image> reference;      // absent: errors are estimated from the variance
     std::string reference_description;   // file and its sample count, when known
+    double reference_relative_mse = -1.0;  // the reference's own estimated relMSE (its header); negative: unknown
     std::vector<IntegratorRun> runs;
     std::vector<CropRegion> crops;
 };
@@ -120,11 +136,14 @@ Line fit_line(const std::vector<double>& x, const std::vector<double>& y);
 // Fits the checkpoints (those with a measured or else estimated relMSE > 0, skipping the very
 // first pass whose time is dominated by start-up): no fit from fewer than MinimumPoints of them
 // or from a span of less than MinimumTimeSpan in time.
-ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints);
+// Measured errors are taken less the reference's own relMSE (when >= 0), and those below its
+// floor are left out.
+ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, double reference_relative_mse = -1.0);
 
 // Time to reach each target relMSE (see TimeToAccuracy); the run's time is its last checkpoint's.
+// Errors as for fit_convergence; a target below the reference's floor is not read at all.
 std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints,
-                                              const std::vector<double>& targets);
+                                              const std::vector<double>& targets, double reference_relative_mse = -1.0);
 
 // The `count` square regions of side `size` where the renders' mean relative error against
 // the reference is highest, not overlapping.
