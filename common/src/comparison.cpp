@@ -177,6 +177,44 @@ std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& che
 }
 // END BOOK
 
+// BOOK(agreement)
+Agreement agreement(const RenderResult& a, const RenderResult& b) {
+    Agreement result;
+    if (a.image.width() != b.image.width() || a.image.height() != b.image.height() ||
+        a.variance.width() != a.image.width() || b.variance.width() != b.image.width() ||
+        a.variance.height() != a.image.height() || b.variance.height() != b.image.height())
+        return result;
+    double squared_differences = 0.0, variances = 0.0, spread = 0.0;
+    for (std::size_t i = 0; i < a.image.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double difference = double(a.image[i][c]) - double(b.image[i][c]);
+            const double variance = double(a.variance[i][c]) + double(b.variance[i][c]);
+            if (variance > 0.0) {
+                const double mean = 0.5 * (double(a.image[i][c]) + double(b.image[i][c]));
+                const double w = 1.0 / (mean * mean + RelativeMseEpsilon);
+                squared_differences += w * difference * difference;
+                variances += w * variance;
+                // Var[(a - b)^2] = 2 (Var a + Var b)^2 for a normal difference, and about as much
+                // again for the variances' own estimates.
+                spread += 4.0 * w * w * variance * variance;
+                ++result.terms;
+            } else if (difference != 0.0) {
+                ++result.one_sided;
+            }
+        }
+    if (variances > 0.0) {
+        result.statistic = squared_differences / variances;
+        result.standard_error = std::sqrt(spread) / variances;
+    }
+    return result;
+}
+
+bool Agreement::disagree() const {
+    if (one_sided > 0) return true;
+    return terms > 0 && statistic > 1.0 + 6.0 * standard_error;
+}
+// END BOOK
+
 std::vector<CropRegion> highest_error_regions(const std::vector<IntegratorRun>& runs, const Image& reference,
                                               int size, int count) {
     const int width = reference.width(), height = reference.height();

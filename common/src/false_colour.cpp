@@ -166,10 +166,32 @@ Image relative_error_map(const Image& image, const Image& reference) {
     return map;
 }
 
+namespace {
+
+// Black with zero variance, beside a lit pixel (of the 3 x 3 around it): no path has found light
+// there yet, which zero variance cannot tell from a pixel that is truly black.
+bool nothing_found_yet(const Image& image, const Image& variance, int x, int y) {
+    if (!is_black(image.at(x, y)) || !is_black(variance.at(x, y))) return false;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx >= 0 && ny >= 0 && nx < image.width() && ny < image.height() && !is_black(image.at(nx, ny))) return true;
+        }
+    return false;
+}
+
+}  // namespace
+
 Image estimated_error_map(const Image& image, const Image& variance) {
     check_same_size(image, variance, "variance");
     Image map(image.width(), image.height());
     for (std::size_t i = 0; i < image.pixel_count(); ++i) {
+        const int x = static_cast<int>(i % static_cast<std::size_t>(image.width()));
+        const int y = static_cast<int>(i / static_cast<std::size_t>(image.width()));
+        if (nothing_found_yet(image, variance, x, y)) {
+            map[i] = UnknownErrorColour;
+            continue;
+        }
         double sum = 0.0;
         for (int c = 0; c < 3; ++c) {
             const double deviation = std::sqrt(std::max(0.0, double(variance[i][c])));

@@ -201,8 +201,15 @@ std::string describe_crop(const NumberedCrop& crop) {
     return r.reason.empty() ? text : text + ", " + r.reason;
 }
 
-std::string describe_fit(const ConvergenceFit& fit) {
+std::string describe_fit(const IntegratorRun& run) {
+    const ConvergenceFit& fit = run.fit;
     if (fit.points == 0) return "no fit (" + fit.no_fit_reason + ")";
+    // An estimated error that grows with time: paths bright and rare enough to raise the variance
+    // are still being found, and until they stop the estimate is too low.
+    if (run.error_is_estimated && fit.slope > 0.0)
+        return "slope " + format_slope(fit.slope) + " from " + std::to_string(fit.points) +
+               " checkpoints: the estimated error rises with time, so it is not yet reliable (rare bright paths are "
+               "still being found; the estimate is too low until they stop)";
     std::string text = "slope " + format_slope(fit.slope) + " (95 %: " + format_slope(fit.slope_low) + " to " +
                        format_slope(fit.slope_high) + ") from " + std::to_string(fit.points) + " checkpoints";
     if (!fit.agrees_with_unbiased_rate())
@@ -211,7 +218,8 @@ std::string describe_fit(const ConvergenceFit& fit) {
 }
 
 std::vector<std::pair<std::string, std::string>> header_facts(const Comparison& comparison, const Layout& layout) {
-    std::string reference = "none: every error is estimated from the render's own per-pixel variance";
+    std::string reference = "none: every error is estimated from the render's own per-pixel variance, which cannot "
+                            "see what a render has not found yet (rare bright paths) nor bias";
     if (comparison.reference) {
         reference = comparison.reference_description.empty() ? "given" : comparison.reference_description;
         if (comparison.reference_relative_mse > 0.0)
@@ -258,7 +266,8 @@ std::string error_map_caption(const Comparison& comparison) {
     const std::string scale = ", averaged over R, G and B, on a log scale from 1e-3 (dark) to 10 (bright); the "
                               "same scale for every integrator (viridis, Smith and van der Walt 2015).";
     if (comparison.reference) return "Per-pixel relative error |x − r| / (|r| + 0.01)" + scale;
-    return "Per-pixel estimated relative error √variance / (|x| + 0.01), from each render's own variance" + scale;
+    return "Per-pixel estimated relative error √variance / (|x| + 0.01), from each render's own variance" + scale +
+           " Grey: unknown, a black pixel with no variance beside lit ones (no light found there yet).";
 }
 
 std::string short_scene_name(const std::string& path) {
@@ -303,6 +312,49 @@ std::vector<std::string> integrator_notes(const Comparison& comparison) {
         for (const std::string& warning : run.result.warnings) lines.push_back(run.integrator + ": warning: " + warning);
         for (const std::string& note : run.result.notes)  // notes that name their integrator already keep their text
             lines.push_back(note.rfind(run.integrator + ":", 0) == 0 ? note : run.integrator + ": " + note);
+    }
+    // Every pair of runs: do their images agree within their own noise? (Without a reference this
+    // is the one check that sees what a run has not found yet.)
+    const std::size_t n = comparison.runs.size();
+    std::vector<std::vector<int>> verdict(n, std::vector<int>(n, 0));  // 1 agree, -1 disagree, 0 unknown
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            const IntegratorRun &a = comparison.runs[i], &b = comparison.runs[j];
+            const Agreement agree = agreement(a.result, b.result);
+            if (agree.terms == 0 && agree.one_sided == 0) continue;  // no variances to compare with
+            verdict[i][j] = verdict[j][i] = agree.disagree() ? -1 : 1;
+            char text[320];
+            std::snprintf(text, sizeof text,
+                          "their relMSE against each other is %.3g times the sum of their own estimates (about 1 ± %.2g "
+                          "if both had converged)",
+                          agree.statistic, agree.standard_error);
+            std::string line = a.integrator + " and " + b.integrator + ": ";
+            if (agree.disagree()) {
+                line += "disagree beyond their combined noise, so at least one of them has not converged: ";
+                line += text;
+                if (agree.one_sided > 0)
+                    line += "; " + std::to_string(agree.one_sided) + " pixel-channels are lit in one and black with no variance in the other";
+            } else if (agree.statistic < 1.0 - 6.0 * agree.standard_error) {
+                // Far closer than independent noise allows: they drew the same random numbers.
+                line += "agree more closely than independent renders could (" + std::string(text) +
+                        "): they share their random numbers (the same seed), so this says little";
+            } else {
+                line += "agree within their noise: " + std::string(text);
+            }
+            lines.push_back(line);
+        }
+    // Which one has not converged: a run at odds with every other, when those agree among themselves.
+    for (std::size_t i = 0; n >= 3 && i < n; ++i) {
+        bool odd_one_out = true;
+        for (std::size_t j = 0; j < n && odd_one_out; ++j) {
+            if (j == i) continue;
+            if (verdict[i][j] != -1) odd_one_out = false;
+            for (std::size_t k = j + 1; k < n && odd_one_out; ++k)
+                if (k != i && verdict[j][k] != 1) odd_one_out = false;
+        }
+        if (odd_one_out)
+            lines.push_back(comparison.runs[i].integrator + " disagrees with every other run, and they agree among "
+                                                            "themselves: it is the one that has not converged");
     }
     return lines;
 }

@@ -99,8 +99,9 @@ std::string format_slope(double slope);
 std::string decade_label(int exponent);
 // A crop's place in words: "16 × 16 pixels at (40, 8), highest error".
 std::string describe_crop(const NumberedCrop& crop);
-// What a run's fit says: "slope −1.02 from 6 checkpoints" or "no fit (too few checkpoints)".
-std::string describe_fit(const ConvergenceFit& fit);
+// What a run's fit says: "slope −1.02 (95 %: −1.10 to −0.95) from 6 checkpoints", "no fit (2
+// checkpoints, 4 needed)", and whether it is not −1 or, estimated, rises with time.
+std::string describe_fit(const IntegratorRun& run);
 
 // The header facts, as (label, value) pairs: scene, renderer, budget, reference, image size.
 std::vector<std::pair<std::string, std::string>> header_facts(const Comparison& comparison, const Layout& layout);

@@ -122,7 +122,7 @@ std::string plot_and_accuracy(const Comparison& comparison, const Layout& layout
     std::string html = "<h2>Error versus time</h2>\n<div class=\"plot\">" +
                        convergence_plot_svg(comparison, SvgUse::InlineHtml) + "</div>\n<ul>\n";
     for (std::size_t i = 0; i < comparison.runs.size(); ++i) {
-        html += "<li>" + escape_xml(layout.run_names[i]) + ": " + escape_xml(describe_fit(comparison.runs[i].fit)) + "</li>\n";
+        html += "<li>" + escape_xml(layout.run_names[i]) + ": " + escape_xml(describe_fit(comparison.runs[i])) + "</li>\n";
     }
     html += "</ul>\n<p>Every checkpoint is in <code>" + CsvFile + "</code> beside this page, every time to accuracy in <code>" +
             TimesCsvFile + "</code>.</p>\n";

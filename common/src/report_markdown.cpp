@@ -48,7 +48,7 @@ std::string metrics_section(const Comparison& comparison) {
 std::string plot_section(const Comparison& comparison, const Layout& layout) {
     std::string text = "## Error versus time\n\n" + image_link("relMSE against wall time, log–log", PlotFile) + "\n\n";
     for (std::size_t i = 0; i < comparison.runs.size(); ++i) {
-        text += "- " + layout.run_names[i] + ": " + describe_fit(comparison.runs[i].fit) + "\n";
+        text += "- " + layout.run_names[i] + ": " + describe_fit(comparison.runs[i]) + "\n";
     }
     return text + "\nEvery checkpoint (time, samples per pixel, errors) is in [" + CsvFile + "](" + CsvFile +
            "), one row per checkpoint, numbered from 1; every time to accuracy, the extrapolated ones as numbers "

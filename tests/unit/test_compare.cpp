@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <random>
 #include <sstream>
 
 using namespace freezeray;
@@ -318,4 +319,39 @@ TEST_CASE("compare refuses bad input before rendering and writes nothing", "[uni
     CompareRequest nowhere = furnace_request(folder);
     nowhere.out_folder = folder.file("no/such/place/report");
     refused(nowhere, "does not exist");
+}
+
+TEST_CASE("two renders agree when they differ by their noise, and not when one has missed light", "[unit][compare]") {
+    // 64 x 64 pixels of mean 1 and variance of the mean 0.01 per channel: a and b draw their
+    // pixels independently, so sum (a - b)^2 / sum (Var a + Var b) is 1 within sqrt(2 / 12288) =
+    // 0.0128 (one standard deviation; the margin below is 6 of them, a chance of about 2e-9).
+    std::mt19937 random(17);
+    std::normal_distribution<float> noise(0.0f, 0.1f);
+    const auto render = [&](float shift) {
+        RenderResult result;
+        result.image = Image(64, 64);
+        result.variance = Image(64, 64, Spectrum(0.01f));
+        for (std::size_t i = 0; i < result.image.pixel_count(); ++i)
+            result.image[i] = Spectrum(1.0f + shift + noise(random), 1.0f + shift + noise(random), 1.0f + shift + noise(random));
+        return result;
+    };
+    const RenderResult a = render(0.0f), b = render(0.0f), biased = render(0.2f);
+    const Agreement same = agreement(a, b);
+    CHECK(same.terms == 64u * 64u * 3u);
+    CHECK(same.statistic == Approx(1.0).margin(0.077));
+    CHECK(same.standard_error == Approx(2.0 / std::sqrt(12288.0)).epsilon(0.05));  // the weights vary a little
+    CHECK_FALSE(same.disagree());
+    // Two standard errors apart on average: D about 1 + 0.2^2 / 0.02 = 3.
+    const Agreement apart = agreement(a, biased);
+    CHECK(apart.statistic == Approx(3.0).margin(0.25));
+    CHECK(apart.disagree());
+    // One pixel lit in a, black with no variance in the other: light one render has not found.
+    RenderResult dark = b;
+    dark.image[5] = Spectrum(0.0f);
+    dark.variance[5] = Spectrum(0.0f);
+    RenderResult lit = a;
+    lit.variance[5] = Spectrum(0.0f);
+    const Agreement missed = agreement(lit, dark);
+    CHECK(missed.one_sided == 3u);
+    CHECK(missed.disagree());
 }

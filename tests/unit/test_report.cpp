@@ -3,6 +3,7 @@
 // marked in the right rows, and a report that cannot be written leaves nothing behind.
 #include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
+#include "freezeray/false_colour.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/metrics.hpp"
 #include "image_files.hpp"
@@ -462,4 +463,51 @@ TEST_CASE("report.md gives each crop's MSE and relMSE per integrator, lowest in 
     const std::string no_reference_folder = temporary.file("estimated");
     write_comparison_report(make_comparison(false), no_reference_folder);
     CHECK(read_text(no_reference_folder + "/report.md").find("in this crop") == std::string::npos);
+}
+
+TEST_CASE("without a reference, a black pixel with no variance beside lit ones is shown as unknown", "[unit][report]") {
+    // A 5 x 3 render: lit everywhere but (1, 1), black with zero variance, and the columns x = 3
+    // and 4, black with zero variance too (x = 3 beside the lit column x = 2, x = 4 not).
+    Image image(5, 3, Spectrum(0.5f)), variance(5, 3, Spectrum(0.01f));
+    image.at(1, 1) = Spectrum(0.0f);
+    variance.at(1, 1) = Spectrum(0.0f);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 3; x < 5; ++x) image.at(x, y) = variance.at(x, y) = Spectrum(0.0f);
+    const Image map = estimated_error_map(image, variance);
+    CHECK(map.at(1, 1) == UnknownErrorColour);  // nothing found yet where light surely is nearby
+    CHECK(map.at(3, 1) == UnknownErrorColour);  // beside the lit column x = 2
+    CHECK(map.at(4, 1) != UnknownErrorColour);  // black among black: truly black, as far as anyone can tell
+    CHECK(map.at(0, 0) != UnknownErrorColour);
+}
+
+TEST_CASE("an estimated error that rises with time is called not yet reliable", "[unit][report]") {
+    TemporaryFolder temporary;
+    Comparison comparison = make_comparison(false);  // no reference: errors are estimated
+    IntegratorRun& run = comparison.runs[0];
+    run.checkpoints.clear();
+    for (int i = 0; i < 7; ++i) {
+        const double t = std::ldexp(1.0, i);
+        run.checkpoints.push_back({t, std::uint64_t(1) << i, -1.0, -1.0, 0.02 * std::pow(t, 0.3)});
+    }
+    run.fit = fit_convergence(run.checkpoints);
+    write_comparison_report(comparison, temporary.file("report"));
+    const std::string markdown = read_text(temporary.file("report/report.md"));
+    CHECK_THAT(markdown, Catch::Contains(run.integrator + ": slope 0.30 from 6 checkpoints: the estimated error rises "
+                                                          "with time, so it is not yet reliable"));
+    CHECK_THAT(markdown, Catch::Contains("cannot see what a render has not found yet"));
+}
+
+TEST_CASE("the report says which run disagrees with the others, which agree", "[unit][report]") {
+    TemporaryFolder temporary;
+    Comparison comparison = make_comparison();
+    // A third run, half as bright again: far outside everyone's noise.
+    IntegratorRun odd = make_run("pt-nee", reference_image(), true, 0.1f, 0.002, 6, 3);
+    for (std::size_t i = 0; i < odd.result.image.pixel_count(); ++i) odd.result.image[i] *= 1.5f;
+    comparison.runs.push_back(odd);
+    write_comparison_report(comparison, temporary.file("report"));
+    const std::string markdown = read_text(temporary.file("report/report.md"));
+    CHECK_THAT(markdown, Catch::Contains("pt-naive and pt-mis: agree within their noise"));
+    CHECK_THAT(markdown, Catch::Contains("pt-naive and pt-nee: disagree beyond their combined noise"));
+    CHECK_THAT(markdown, Catch::Contains("pt-nee disagrees with every other run, and they agree among themselves"));
+    CHECK(markdown.find("pt-mis disagrees with every other run") == std::string::npos);
 }

@@ -37,6 +37,11 @@ Image relative_error_map(const Image& image, const Image& reference);
 
 // Without a reference: the false-colour map of each pixel's standard error relative to its value,
 // sqrt(variance) / (|x| + 1e-2), averaged over channels (`variance` is the variance of the mean).
+// A pixel that is black with zero variance while a neighbour is lit has found no light yet: its
+// variance says nothing of its error, and it is painted UnknownErrorColour, not as exact.
 Image estimated_error_map(const Image& image, const Image& variance);
+
+// The colour of a pixel whose estimated error is unknown (a mid grey, which viridis never takes).
+inline const Spectrum UnknownErrorColour{0.2140f, 0.2140f, 0.2140f};  // sRGB 128
 
 }  // namespace freezeray
