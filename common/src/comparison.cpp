@@ -11,17 +11,11 @@
 
 namespace freezeray {
 
-namespace {
-
-// The relMSE a checkpoint contributes to fits: measured when there is a reference (less the
-// reference's own, and none below the reference's floor), else estimated.
 double checkpoint_error(const Checkpoint& c, double reference_relative_mse) {
     if (c.relative_mse < 0.0) return c.estimated_relative_mse;
     const double error = less_reference_noise(c.relative_mse, reference_relative_mse);
     return error >= reference_floor(reference_relative_mse) && error > 0.0 ? error : -1.0;
 }
-
-}  // namespace
 
 double less_reference_noise(double measured_relative_mse, double reference_relative_mse) {
     return reference_relative_mse > 0.0 ? measured_relative_mse - reference_relative_mse : measured_relative_mse;

@@ -72,15 +72,6 @@ std::string marker(std::size_t index, double x, double y, const std::string& col
     }
 }
 
-// The error a checkpoint is plotted at: measured when there is a reference, else estimated
-// (the same choice as the fit in comparison.cpp).
-// Measured errors less the reference's own, none below its floor (they are not known).
-double plotted_error(const Checkpoint& checkpoint, double reference_relative_mse) {
-    if (checkpoint.relative_mse < 0.0) return checkpoint.estimated_relative_mse;
-    const double error = less_reference_noise(checkpoint.relative_mse, reference_relative_mse);
-    return error >= reference_floor(reference_relative_mse) ? error : -1.0;
-}
-
 // The whole decades [low, high] that hold every value (at least one decade; `fallback` if none).
 std::pair<int, int> decade_range(const std::vector<double>& values, std::pair<int, int> fallback) {
     if (values.empty()) return fallback;
@@ -162,7 +153,7 @@ std::string convergence_plot_svg(const Comparison& comparison, SvgUse use) {
     for (const IntegratorRun& run : comparison.runs) {
         series.emplace_back();
         for (const Checkpoint& checkpoint : run.checkpoints) {
-            const double error = plotted_error(checkpoint, comparison.reference_relative_mse);
+            const double error = checkpoint_error(checkpoint, comparison.reference_relative_mse);
             if (!(error > 0.0 && checkpoint.seconds > 0.0) || !std::isfinite(error) || !std::isfinite(checkpoint.seconds)) {
                 continue;
             }

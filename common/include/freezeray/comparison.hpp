@@ -32,6 +32,9 @@ inline constexpr double ReferenceMargin = 10.0;
 double less_reference_noise(double measured_relative_mse, double reference_relative_mse);
 // The smallest relMSE the reference can measure: ReferenceMargin times its own (0 when unknown).
 double reference_floor(double reference_relative_mse);
+// The relMSE of a checkpoint as fits and plots read it: measured when there is a reference (less
+// the reference's own; negative, i.e. none, below the reference's floor), else estimated.
+double checkpoint_error(const Checkpoint& checkpoint, double reference_relative_mse);
 
 // The line log10(relMSE) = intercept + slope log10(seconds) through a run's checkpoints, fitted
 // robustly: the Theil-Sen estimator (Theil 1950; Sen 1968), whose slope is the median of the
