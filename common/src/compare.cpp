@@ -205,10 +205,21 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     // END BOOK
 
     comparison.crops = request.crops;
+    const int size = std::max(8, std::min(scene.camera->width(), scene.camera->height()) / 8);
     if (comparison.reference) {
-        const int size = std::max(8, std::min(scene.camera->width(), scene.camera->height()) / 8);
         for (CropRegion& region : highest_error_regions(comparison.runs, *comparison.reference, size, 2))
             comparison.crops.push_back(region);
+    } else if (comparison.runs.size() >= 2) {
+        // Without a reference, where the runs differ most from their own mean: where at least one
+        // of them is furthest from converged.
+        Image mean(scene.camera->width(), scene.camera->height());
+        for (const IntegratorRun& run : comparison.runs)
+            for (std::size_t p = 0; p < mean.pixel_count(); ++p)
+                mean[p] += run.result.image[p] / static_cast<float>(comparison.runs.size());
+        for (CropRegion& region : highest_error_regions(comparison.runs, mean, size, 2)) {
+            region.reason = "highest disagreement between the runs";
+            comparison.crops.push_back(region);
+        }
     }
     return comparison;
 }

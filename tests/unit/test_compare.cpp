@@ -292,6 +292,18 @@ TEST_CASE("a reference of the runs' own seed is refused; a noisy one marks what 
     }
 }
 
+TEST_CASE("without a reference the crops show where the runs disagree most", "[unit][compare]") {
+    TemporaryFolder folder;
+    CompareRequest request = furnace_request(folder);
+    request.reference.clear();
+    request.width = request.height = 32;  // room for two crops of 8 x 8 that do not overlap
+    request.crops = {{0, 0, 4, 4, "chosen by the user"}};
+    const Comparison comparison = run_comparison(request, testing::full_registry());
+    REQUIRE(comparison.crops.size() == 3u);  // the user's, then two found
+    CHECK(comparison.crops[0].reason == "chosen by the user");
+    for (std::size_t i = 1; i < 3; ++i) CHECK(comparison.crops[i].reason == "highest disagreement between the runs");
+}
+
 TEST_CASE("compare refuses bad input before rendering and writes nothing", "[unit][compare]") {
     TemporaryFolder folder;
     auto refused = [&](CompareRequest request, const std::string& expected) {
