@@ -16,9 +16,9 @@ namespace freezeray::report {
 namespace {
 
 // The plot's canvas and the rectangle of its axes; the legend sits right of the axes.
-constexpr double CanvasWidth = 800, CanvasHeight = 500;
-constexpr double Left = 80, Right = 565, Top = 50, Bottom = 430;
-constexpr double LegendX = 590;
+constexpr double CanvasWidth = 960, CanvasHeight = 600;
+constexpr double Left = 90, Right = 690, Top = 50, Bottom = 525;
+constexpr double LegendX = 715;
 
 // M. Okabe and K. Ito, "Color Universal Design (CUD): How to make figures and presentations that
 // are friendly to colorblind people", 2008: eight colours that stay distinct for every common
@@ -174,7 +174,7 @@ std::string convergence_plot_svg(const Comparison& comparison, SvgUse use) {
 
     const std::string title = "Error versus time: " + short_scene_name(comparison.scene);
     std::string svg = svg_open(use, CanvasWidth, CanvasHeight, title + " (log–log)");
-    svg += "<rect width=\"800\" height=\"500\" fill=\"#ffffff\"/>\n";
+    svg += "<rect width=\"" + coordinate(CanvasWidth) + "\" height=\"" + coordinate(CanvasHeight) + "\" fill=\"#ffffff\"/>\n";
     svg += "<defs><clipPath id=\"plot-area\"><rect x=\"" + coordinate(Left) + "\" y=\"" + coordinate(Top) +
            "\" width=\"" + coordinate(Right - Left) + "\" height=\"" + coordinate(Bottom - Top) + "\"/></clipPath></defs>\n";
     svg += text_element((Left + Right) / 2, 30, title, " font-size=\"18\" font-weight=\"bold\" text-anchor=\"middle\"");
