@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace freezeray {
@@ -63,15 +64,22 @@ double header_number(const Image& image, const std::string& key) {
 // indices) shares their noise: errors against it come out too small. Refused when its header
 // shows it; a warning when the header does not say.
 void check_reference_independent(const CompareRequest& request, const Image& reference, bool quiet) {
-    const double seed = header_number(reference, "freezeray:seed");
-    if (seed < 0.0) {
+    // The seed as the integer it is (a double would round seeds above 2^53).
+    std::optional<std::uint64_t> seed;
+    if (const auto it = reference.metadata.find("freezeray:seed"); it != reference.metadata.end()) {
+        try {
+            seed = std::stoull(it->second);
+        } catch (const std::exception&) {
+        }
+    }
+    if (!seed) {
         if (!quiet)
             std::cerr << "warning: " << request.reference << " does not say which seed it was rendered with: "
                       << "make sure it is not " << request.seed << ", this comparison's, or its errors come out too small\n";
         return;
     }
     const double offset = std::max(0.0, header_number(reference, "freezeray:sample_offset"));
-    if (static_cast<std::uint64_t>(seed) != request.seed) return;
+    if (*seed != request.seed) return;
     // The runs draw samples 0, 1, 2, ... of their seed; the reference from `offset` on.
     const bool overlaps = request.time_seconds > 0.0 || offset < static_cast<double>(request.samples_per_pixel);
     if (overlaps)
@@ -204,6 +212,7 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     }
     // END BOOK
 
+    comparison.agreements = pairwise_agreements(comparison.runs);
     comparison.crops = request.crops;
     const int size = std::max(8, std::min(scene.camera->width(), scene.camera->height()) / 8);
     if (comparison.reference) {

@@ -209,6 +209,16 @@ bool Agreement::disagree() const {
 }
 // END BOOK
 
+std::vector<RunAgreement> pairwise_agreements(const std::vector<IntegratorRun>& runs) {
+    std::vector<RunAgreement> result;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        for (std::size_t j = i + 1; j < runs.size(); ++j) {
+            const Agreement agree = agreement(runs[i].result, runs[j].result);
+            if (agree.terms > 0 || agree.one_sided > 0) result.push_back({i, j, agree});  // else no variances
+        }
+    return result;
+}
+
 std::vector<CropRegion> highest_error_regions(const std::vector<IntegratorRun>& runs, const Image& reference,
                                               int size, int count) {
     const int width = reference.width(), height = reference.height();

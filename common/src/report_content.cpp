@@ -313,36 +313,36 @@ std::vector<std::string> integrator_notes(const Comparison& comparison) {
         for (const std::string& note : run.result.notes)  // notes that name their integrator already keep their text
             lines.push_back(note.rfind(run.integrator + ":", 0) == 0 ? note : run.integrator + ": " + note);
     }
-    // Every pair of runs: do their images agree within their own noise? (Without a reference this
-    // is the one check that sees what a run has not found yet.)
+    // Every pair of runs: do their images agree within their own noise (pairwise_agreements, in
+    // run_comparison)? Without a reference this is the one check that sees what a run has not
+    // found yet.
     const std::size_t n = comparison.runs.size();
     std::vector<std::vector<int>> verdict(n, std::vector<int>(n, 0));  // 1 agree, -1 disagree, 0 unknown
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = i + 1; j < n; ++j) {
-            const IntegratorRun &a = comparison.runs[i], &b = comparison.runs[j];
-            const Agreement agree = agreement(a.result, b.result);
-            if (agree.terms == 0 && agree.one_sided == 0) continue;  // no variances to compare with
-            verdict[i][j] = verdict[j][i] = agree.disagree() ? -1 : 1;
-            char text[320];
-            std::snprintf(text, sizeof text,
-                          "their relMSE against each other is %.3g times the sum of their own estimates (about 1 ± %.2g "
-                          "if both had converged)",
-                          agree.statistic, agree.standard_error);
-            std::string line = a.integrator + " and " + b.integrator + ": ";
-            if (agree.disagree()) {
-                line += "disagree beyond their combined noise, so at least one of them has not converged: ";
-                line += text;
-                if (agree.one_sided > 0)
-                    line += "; " + std::to_string(agree.one_sided) + " pixel-channels are lit in one and black with no variance in the other";
-            } else if (agree.statistic < 1.0 - 6.0 * agree.standard_error) {
-                // Far closer than independent noise allows: they drew the same random numbers.
-                line += "agree more closely than independent renders could (" + std::string(text) +
-                        "): they share their random numbers (the same seed), so this says little";
-            } else {
-                line += "agree within their noise: " + std::string(text);
-            }
-            lines.push_back(line);
+    for (const RunAgreement& pair : comparison.agreements) {
+        if (pair.first >= n || pair.second >= n) continue;
+        const IntegratorRun &a = comparison.runs[pair.first], &b = comparison.runs[pair.second];
+        const Agreement& agree = pair.agreement;
+        verdict[pair.first][pair.second] = verdict[pair.second][pair.first] = agree.disagree() ? -1 : 1;
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "their relMSE against each other is %.3g times the sum of their own estimates (about 1 ± %.2g "
+                      "if both had converged)",
+                      agree.statistic, agree.standard_error);
+        std::string line = a.integrator + " and " + b.integrator + ": ";
+        if (agree.disagree()) {
+            line += "disagree beyond their combined noise, so at least one of them has not converged: ";
+            line += text;
+            if (agree.one_sided > 0)
+                line += "; " + std::to_string(agree.one_sided) + " pixel-channels are lit in one and black with no variance in the other";
+        } else if (agree.statistic < 1.0 - 6.0 * agree.standard_error) {
+            // Far closer than independent noise allows: they drew the same random numbers.
+            line += "agree more closely than independent renders could (" + std::string(text) +
+                    "): they share their random numbers (the same seed), so this says little";
+        } else {
+            line += "agree within their noise: " + std::string(text);
         }
+        lines.push_back(line);
+    }
     // Which one has not converged: a run at odds with every other, when those agree among themselves.
     for (std::size_t i = 0; n >= 3 && i < n; ++i) {
         bool odd_one_out = true;

@@ -110,6 +110,7 @@ Comparison make_comparison(bool has_reference = true) {
     comparison.runs.push_back(make_run("pt-mis", reference, has_reference, 0.1f, 0.0025, 6, 2));
     comparison.runs[0].checkpoints[0].estimated_relative_mse = -1.0;  // a missing value: an empty CSV field
     comparison.crops = {{2, 3, 5, 4, "highest error"}, {12, 8, 8, 8, "chosen by the user"}};  // the second is clipped
+    comparison.agreements = pairwise_agreements(comparison.runs);  // as run_comparison does
     return comparison;
 }
 
@@ -504,6 +505,7 @@ TEST_CASE("the report says which run disagrees with the others, which agree", "[
     IntegratorRun odd = make_run("pt-nee", reference_image(), true, 0.1f, 0.002, 6, 3);
     for (std::size_t i = 0; i < odd.result.image.pixel_count(); ++i) odd.result.image[i] *= 1.5f;
     comparison.runs.push_back(odd);
+    comparison.agreements = pairwise_agreements(comparison.runs);
     write_comparison_report(comparison, temporary.file("report"));
     const std::string markdown = read_text(temporary.file("report/report.md"));
     CHECK_THAT(markdown, Catch::Contains("pt-naive and pt-mis: agree within their noise"));

@@ -87,6 +87,31 @@ struct IntegratorRun {
     std::vector<TimeToAccuracy> time_to_accuracy;  // for 1e-2 and 1e-3
 };
 
+// Whether two renders of the same scene agree within their noise. For independent unbiased
+// renders a and b, E[(a - b)^2] = Var a + Var b in every pixel and channel, so the relMSE between
+// them should be the sum of their own estimated relMSEs: with weights w = 1 / (m^2 + 0.01) (m
+// their mean, as relMSE weighs pixels), D = sum w (a - b)^2 / sum w (Var a + Var b) is about 1.
+// Ratios of sums, not a mean of per-pixel ratios, because a splatting film's per-pixel variance
+// is a noisy one-degree-of-freedom estimate. A D well above 1 says that at least one of them has
+// not converged (rare bright paths not yet found, or bias). Pixel-channels where both variances
+// are zero are counted apart: `one_sided` those that differ there (lit in one render, and black
+// with zero variance in the other: light one of them has not found).
+struct Agreement {
+    double statistic = 0.0;        // D
+    double standard_error = 0.0;   // of D's numerator and denominator together, relative, if they agree
+    std::size_t terms = 0;         // pixel-channels with a variance
+    std::size_t one_sided = 0;     // pixel-channels that differ where both variances are zero
+    // D beyond 1 + 6 standard errors, or any one-sided pixel.
+    bool disagree() const;
+};
+Agreement agreement(const RenderResult& a, const RenderResult& b);
+
+// The agreement of runs `first` and `second` (indices into Comparison::runs).
+struct RunAgreement {
+    std::size_t first = 0, second = 0;
+    Agreement agreement;
+};
+
 // A rectangle of the image shown magnified in the report.
 struct CropRegion {
     int x = 0, y = 0, width = 0, height = 0;
@@ -103,6 +128,7 @@ struct Comparison {
     double reference_relative_mse = -1.0;  // the reference's own estimated relMSE (its header); negative: unknown
     std::vector<IntegratorRun> runs;
     std::vector<CropRegion> crops;
+    std::vector<RunAgreement> agreements;  // every pair of runs that both have variances
 };
 
 class Registry;
@@ -148,24 +174,9 @@ ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, doubl
 std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints,
                                               const std::vector<double>& targets, double reference_relative_mse = -1.0);
 
-// Whether two renders of the same scene agree within their noise. For independent unbiased
-// renders a and b, E[(a - b)^2] = Var a + Var b in every pixel and channel, so the relMSE between
-// them should be the sum of their own estimated relMSEs: with weights w = 1 / (m^2 + 0.01) (m
-// their mean, as relMSE weighs pixels), D = sum w (a - b)^2 / sum w (Var a + Var b) is about 1.
-// Ratios of sums, not a mean of per-pixel ratios, because a splatting film's per-pixel variance
-// is a noisy one-degree-of-freedom estimate. A D well above 1 says that at least one of them has
-// not converged (rare bright paths not yet found, or bias). Pixel-channels where both variances
-// are zero are counted apart: `one_sided` those that differ there (lit in one render, and black
-// with zero variance in the other: light one of them has not found).
-struct Agreement {
-    double statistic = 0.0;        // D
-    double standard_error = 0.0;   // of D's numerator and denominator together, relative, if they agree
-    std::size_t terms = 0;         // pixel-channels with a variance
-    std::size_t one_sided = 0;     // pixel-channels that differ where both variances are zero
-    // D beyond 1 + 6 standard errors, or any one-sided pixel.
-    bool disagree() const;
-};
-Agreement agreement(const RenderResult& a, const RenderResult& b);
+
+// Every pair of runs (in index order) whose images have variances to compare with.
+std::vector<RunAgreement> pairwise_agreements(const std::vector<IntegratorRun>& runs);
 
 // The `count` square regions of side `size` where the renders' mean relative error against
 // the reference is highest, not overlapping.
