@@ -160,9 +160,20 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     auto* compare_spp = compare_command->add_option("--spp", compare.samples_per_pixel, "samples per pixel per integrator");
     compare_time->excludes(compare_spp);
     compare_command->add_option("--reference", compare.reference, "reference image (EXR, PFM, HDR)");
-    compare_command->add_option("--out", compare.out_folder, "folder for report.html, report.md, convergence.csv, time_to_accuracy.csv")->required();
+    compare_command->add_option("--out", compare.out_folder,
+                                "folder for report.html, report.md, convergence.csv, time_to_accuracy.csv");
+    std::string make_reference;
+    double reference_target_error = 0.0;
+    compare_command->add_option("--make-reference", make_reference,
+                                "instead of comparing, render a reference for this comparison to FILE.exr, with the one "
+                                "integrator of --integrators, under a seed other than the comparison's");
+    compare_command
+        ->add_option("--target-error", reference_target_error,
+                     "with --make-reference: stop when the reference's estimated relMSE falls below this (--time, --spp cap it)")
+        ->check(CLI::PositiveNumber);
     compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
-    compare_command->add_option("--seed", compare.seed, "random seed");
+    compare_command->add_option("--seed", compare.seed,
+                                "random seed of the runs (default 0); a reference made with --make-reference gets another");
     compare_command->add_option("--max-depth", compare.max_depth, "maximum path length in segments");
     compare_command->add_option("--width", compare.width, "image width (default: the scene's)");
     compare_command->add_option("--height", compare.height, "image height (default: the scene's)");
@@ -192,6 +203,12 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
                     name.clear();
                 }
             }
+            if (!make_reference.empty()) {
+                for (const std::string& c : compare_crops) compare.crops.push_back(parse_crop(c));
+                return run_make_reference(compare, reference_target_error, make_reference, registry);
+            }
+            if (reference_target_error > 0.0)
+                throw InputError("--target-error", "only --make-reference stops at an error; a comparison runs its budget");
             return run_compare(compare, compare_crops, registry);
         }
     } catch (const InputError& e) {

@@ -37,6 +37,11 @@ int run_render(const RenderOptions& options, const Registry& registry);
 // `merge OUT INPUT...`: combines renders of one scene made from disjoint samples.
 int run_merge(const std::string& out, const std::vector<std::string>& inputs, bool quiet);
 
+struct CompareRequest;
+// `compare --make-reference OUT`: renders the reference for a comparison of request's scene, with
+// its one integrator and budget (time, samples or target_error), under reference_seed(request.seed).
+int run_make_reference(const CompareRequest& request, double target_error, const std::string& out, const Registry& registry);
+
 class Scene;
 class Integrator;
 // A warning for an integrator that cannot find the scene's point, spot and directional lights

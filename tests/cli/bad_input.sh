@@ -145,6 +145,11 @@ expect_failure "corrupt reference image" "garbage.exr" -- compare "$work/good.js
 "$renderer" render "$work/good.json" --spp 1 --quiet --out "$work/whole.exr" >/dev/null 2>&1
 head -c 200 "$work/whole.exr" > "$work/cut.exr"
 expect_failure "truncated reference image" "cut.exr" -- compare "$work/good.json" --integrators pt-naive --spp 1 --reference "$work/cut.exr" --out "$work/report"
+# compare --make-reference: one integrator, a budget, an EXR (whose header keeps the seed).
+expect_failure "reference from two integrators" "--integrators" "one integrator" -- compare "$work/good.json" --integrators pt-naive,pt-naive --spp 1 --make-reference "$work/out.png"
+expect_failure "reference without a budget" "--time/--spp/--target-error" -- compare "$work/good.json" --integrators pt-naive --make-reference "$work/out.png"
+expect_failure "reference not in EXR" "out.png" "OpenEXR" -- compare "$work/good.json" --integrators pt-naive --spp 1 --make-reference "$work/out.png"
+expect_failure "target error without --make-reference" "--target-error" "only --make-reference" -- compare "$work/good.json" --integrators pt-naive --spp 1 --target-error 0.1 --out "$work/report"
 chapter02="$(dirname "$renderer")/ch02"
 if [ -x "$chapter02" ]; then
     head -c -12 "$work/good.png" > "$work/cut.png"  # without its IEND chunk

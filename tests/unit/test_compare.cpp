@@ -292,6 +292,17 @@ TEST_CASE("a reference of the runs' own seed is refused; a noisy one marks what 
     }
 }
 
+TEST_CASE("a reference made for a comparison never gets the comparison's seed, and stays a valid --seed", "[unit][compare]") {
+    const std::uint64_t top = std::uint64_t{1} << 63;
+    for (const std::uint64_t seed : {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{3}, std::uint64_t{12345}, top - 1, top,
+                                     top + 1, ~std::uint64_t{0}, reference_seed(0)}) {
+        CAPTURE(seed);
+        CHECK(reference_seed(seed) != seed);
+        CHECK(reference_seed(seed) < top);  // a signed 64-bit --seed
+    }
+    CHECK(reference_seed(1) != reference_seed(2));  // different comparisons, different references
+}
+
 TEST_CASE("without a reference the crops show where the runs disagree most", "[unit][compare]") {
     TemporaryFolder folder;
     CompareRequest request = furnace_request(folder);

@@ -149,6 +149,11 @@ struct CompareRequest {
     bool quiet = false;
 };
 
+// The seed of a reference made for a comparison whose runs use `comparison_seed` (compare
+// --make-reference): never comparison_seed itself, so that the reference's noise is independent of
+// the runs' and errors against it are not too small.
+std::uint64_t reference_seed(std::uint64_t comparison_seed);
+
 // Checks the request (scene, integrator names, reference size, output folder) before any
 // rendering, then renders the scene with each integrator and measures it. Throws InputError
 // for bad input; nothing is written.
