@@ -39,10 +39,14 @@ nlohmann::json material_from_mtl(const MtlMaterial& m) {
         j["ior"] = m.ni;
         if (j["type"] == "roughdielectric") j["roughness"] = *m.pr;
     } else if (m.pm.has_value() && *m.pm > 0.5f) {
-        // A PBR metal: its base colour (Kd) is the reflectance at normal incidence.
+        // A PBR metal: its base colour is the reflectance at normal incidence. The PBR extension
+        // writes it as Kd; files that keep the classic metal (illum 3, reflectance in Ks) and add
+        // Pm leave Kd black, as the Bitterli scenes' conversions do: then Ks is the colour.
         j["type"] = rough ? "roughconductor" : "conductor";
-        j["specular_reflectance"] = colour(m.kd);
-        if (!m.map_kd.empty()) j["specular_reflectance_texture"] = m.map_kd;
+        const bool colour_in_ks = is_black(m.kd) && m.map_kd.empty() && (!is_black(m.ks) || !m.map_ks.empty());
+        j["specular_reflectance"] = colour(colour_in_ks ? m.ks : m.kd);
+        if (!colour_in_ks && !m.map_kd.empty()) j["specular_reflectance_texture"] = m.map_kd;
+        if (colour_in_ks && !m.map_ks.empty()) j["specular_reflectance_texture"] = m.map_ks;
         if (rough) add_roughness();
     } else if (m.illum == 3 || m.illum == 5) {
         j["type"] = rough ? "roughconductor" : "conductor";

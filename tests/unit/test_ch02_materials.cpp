@@ -11,6 +11,7 @@
 #include "freezeray/ch02/specular_conductor.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
+#include "freezeray/material_from_mtl.hpp"
 #include "freezeray/scene.hpp"
 
 #include "test_scenes.hpp"
@@ -272,6 +273,22 @@ TEST_CASE("bad material parameters are InputErrors naming the JSON path", "[unit
         const std::string message = error_of(c.description, folder.path());
         CHECK_THAT(message, Catch::Contains("scene.json: /materials/m" + c.where + ":") && Catch::Contains(c.says));
     }
+}
+
+TEST_CASE("an MTL metal's colour is its Kd, or its Ks when Kd is black (the classic illum 3 metal with Pm)", "[unit][materials]") {
+    MtlMaterial pbr;  // the PBR extension: base colour in Kd
+    pbr.kd = Spectrum(0.9f, 0.6f, 0.2f);
+    pbr.ks = Spectrum(0.5f);
+    pbr.pm = 1.0f;
+    CHECK(material_from_mtl(pbr)["specular_reflectance"] == nlohmann::json({0.9f, 0.6f, 0.2f}));
+    MtlMaterial classic;  // Kd 0, Ks = reflectance, Pm 1, illum 3 (staircase2.mtl's "Metal")
+    classic.ks = Spectrum(0.928047f, 0.917804f, 0.918909f);
+    classic.pm = 1.0f;
+    classic.illum = 3;
+    classic.pr = 0.316228f;
+    const nlohmann::json j = material_from_mtl(classic);
+    CHECK(j["type"] == "roughconductor");
+    CHECK(j["specular_reflectance"] == nlohmann::json({0.928047f, 0.917804f, 0.918909f}));
 }
 
 TEST_CASE("MTL materials load as chapter 02 materials", "[unit][materials][scene]") {

@@ -237,3 +237,46 @@ TEST_CASE("Sponza loads under its white sky and at night with its lanterns and n
         }
     }
 }
+
+// Bitterli's scenes (scenes/staircase2, veach-bidir, water-caustic, material-testball): the
+// meshes, emitters and cameras their shared files describe (../shared/scenes/*/camera.txt,
+// lights.txt, SOURCE.txt).
+TEST_CASE("Bitterli's scenes load with the cameras and lights of their originals", "[unit][scene]") {
+    const std::optional<std::string> shared = testing::shared_scenes_folder();
+    if (!shared || !std::filesystem::exists(*shared + "/staircase2/staircase2.obj")) {
+        WARN("skipped: the shared Bitterli scenes are not there (set FREEZERAY_SHARED_SCENES)");
+        return;
+    }
+    SceneLoadOptions options;
+    options.accelerator = "bruteforce";
+    struct Expected {
+        const char* scene;
+        std::size_t triangles, emissive;  // triangles after the loader drops the degenerate ones
+        int width, height;
+        Spectrum brightest;  // the largest radiance of lights.txt
+        bool environment;
+    };
+    const Expected cases[] = {
+        // 31,407 triangles, 2,432 of zero area; 5 disks of 96 triangles and 8 rectangles of 2.
+        {"staircase2/scene.json", 28975, 5 * 96 + 8 * 2, 640, 360, Spectrum(4.575f, 3.59076f, 1.54977f), false},
+        {"veach-bidir/scene.json", 11544, 2 * 2, 512, 512, Spectrum(12048.2f, 8605.84f, 6196.21f), false},
+        {"water-caustic/scene.json", 103487, 2, 512, 512, Spectrum(541127.0f, 381972.0f, 127324.0f), false},
+        // 80,770 triangles, 128 of zero area; lit by the environment alone.
+        {"material-testball/scene.json", 80642, 0, 640, 360, Spectrum(0.0f), true},
+    };
+    for (const Expected& e : cases) {
+        INFO(e.scene);
+        const Scene scene = load_scene(testing::scene_path(e.scene), testing::full_registry(), options);
+        CHECK(scene.triangle_count() == e.triangles);
+        CHECK(scene.emissive_triangles.size() == e.emissive);
+        CHECK(scene.camera->width() == e.width);
+        CHECK(scene.camera->height() == e.height);
+        CHECK((scene.environment != nullptr) == e.environment);
+        Spectrum brightest(0.0f);
+        for (const auto& m : scene.materials)
+            if (m->is_emissive() && max_component(m->emission) > max_component(brightest)) brightest = m->emission;
+        CHECK(brightest.r == e.brightest.r);
+        CHECK(brightest.g == e.brightest.g);
+        CHECK(brightest.b == e.brightest.b);
+    }
+}
