@@ -8,9 +8,7 @@ renderer=$1
 source_dir=$2
 complete_renderer=$3
 chapter01_renderer=$renderer
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/harness.sh"
 
 # expect_failure NAME EXPECTED_TEXT... -- ARGS: runs the renderer with ARGS (output to
 # $work/out.png unless ARGS say otherwise) and checks exit status (1), message and output.

@@ -4,9 +4,7 @@
 # Usage: chapter_options.sh SOURCE_DIR CH01 CH03 CH04 CH05 FREEZERAY
 set -u
 source_dir=$1 ch01=$2 ch03=$3 ch04=$4 ch05=$5 freezeray=$6
-failures=0
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/harness.sh"
 
 # has RENDERER OPTION yes|no: whether `render --help` lists OPTION.
 has() {

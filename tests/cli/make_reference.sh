@@ -5,10 +5,7 @@
 set -u
 renderer=$1
 scene=$2/scenes/cornell-box/scene.json
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/harness.sh"
 
 # A reference by samples: it exists, and its summary names its seed and the errors it can measure.
 message=$("$renderer" compare "$scene" --integrators pt-mis --spp 64 --width 16 --height 16 --make-reference "$work/ref.exr" 2>&1 >/dev/null)

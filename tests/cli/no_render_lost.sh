@@ -6,11 +6,7 @@
 set -u
 renderer=$1
 scene=$2/scenes/cornell-box/scene.json
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-ok() { echo "ok   $*"; }
+source "$(dirname "$0")/harness.sh"
 
 # The render every case uses: long enough to be interrupted, small enough to finish in seconds.
 render() { "$renderer" render "$scene" --width 48 --height 48 --quiet "$@"; }

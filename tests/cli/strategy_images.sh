@@ -6,9 +6,7 @@
 set -u
 renderer=$1
 source_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/harness.sh"
 scene="$source_dir/scenes/cornell-box/scene.json"
 fail() { echo "FAIL [$1]"; failures=$((failures + 1)); }
 

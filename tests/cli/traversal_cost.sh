@@ -5,9 +5,7 @@
 # Usage: traversal_cost.sh SOURCE_DIR CH06
 set -u
 source_dir=$1 ch06=$2
-failures=0
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+source "$(dirname "$0")/harness.sh"
 scene=$source_dir/scenes/cornell-box/scene.json
 
 check() {  # check NAME CONDITION...
