@@ -182,6 +182,31 @@ void read_lights(const Parameters& top, const nlohmann::json& root, Scene& scene
     }
 }
 
+// The MTL maps the renderer reads nothing from, said once per kind and file rather than dropped in
+// silence: alpha masks (map_d: cut-outs such as Sponza's leaves and chains render solid) and bump
+// or normal maps (map_bump / bump: shading uses the mesh's own normals).
+std::vector<std::string> unused_maps_warnings(const std::vector<MtlMaterial>& materials) {
+    std::vector<std::string> warnings;
+    const auto warn = [&](std::string MtlMaterial::*map, const std::string& what) {
+        std::string names, file;
+        std::size_t count = 0;
+        for (const MtlMaterial& m : materials) {
+            if ((m.*map).empty()) continue;
+            if (count < 4) names += (count > 0 ? ", " : "") + m.name;
+            if (file.empty()) file = m.where.substr(0, m.where.rfind(':'));
+            ++count;
+        }
+        if (count == 0) return;
+        if (count > 4) names += ", ...";
+        warnings.push_back(file + ": " + std::to_string(count) + " material" + (count == 1 ? "" : "s") + " (" + names +
+                           ") name " + what);
+    };
+    warn(&MtlMaterial::map_d, "an alpha mask (map_d), which this renderer does not cut out: those surfaces render solid");
+    warn(&MtlMaterial::map_bump,
+         "a bump or normal map (map_bump, bump), which this renderer does not read: shading uses the mesh's normals");
+    return warnings;
+}
+
 }  // namespace
 
 std::size_t Scene::triangle_count() const {
@@ -272,6 +297,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
                 local_to_scene[k] = it != material_index.end() ? it->second
                                                                : add_material(mtl.name, material_from_mtl(mtl), mtl.where, "");
             }
+            for (std::string& w : unused_maps_warnings(obj.materials)) scene.warnings.push_back(std::move(w));
         }
         for (TriangleMesh& mesh : obj.meshes) {
             for (std::uint32_t& f : mesh.face_materials) f = local_to_scene[f];

@@ -291,6 +291,24 @@ TEST_CASE("an MTL metal's colour is its Kd, or its Ks when Kd is black (the clas
     CHECK(j["specular_reflectance"] == nlohmann::json({0.928047f, 0.917804f, 0.918909f}));
 }
 
+TEST_CASE("MTL alpha masks and bump maps the renderer does not read are named in a warning", "[unit][materials][scene]") {
+    const TemporaryFolder folder;
+    write_two_texels(folder.file("mask.png"), Spectrum(0.0f), Spectrum(1.0f));
+    std::ofstream(folder.file("plants.mtl")) << "newmtl leaf\nKd 0.5 0.5 0.5\nmap_d mask.png\nmap_bump mask.png\n\n"
+                                                "newmtl vine\nKd 0.5 0.5 0.5\nbump mask.png\n\n"
+                                                "newmtl stone\nKd 0.5 0.5 0.5\n";
+    std::ofstream(folder.file("plants.obj")) << "mtllib plants.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                                                "usemtl leaf\nf 1/1 2/2 3/3\nusemtl vine\nf 1/1 2/2 3/3\nusemtl stone\nf 1/1 2/2 3/3\n";
+    std::ofstream(folder.file("scene.json"))
+        << R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [4, 4]},
+              "meshes": [{"file": "plants.obj"}]})";
+    const Scene scene = load_scene(folder.file("scene.json"), chapter02_registry());
+    REQUIRE(scene.warnings.size() == 2u);
+    CHECK_THAT(scene.warnings[0], Catch::Contains("plants.mtl: 1 material (leaf) name an alpha mask (map_d)") &&
+                                      Catch::Contains("render solid"));
+    CHECK_THAT(scene.warnings[1], Catch::Contains("plants.mtl: 2 materials (leaf, vine) name a bump or normal map"));
+}
+
 TEST_CASE("MTL materials load as chapter 02 materials", "[unit][materials][scene]") {
     const TemporaryFolder folder;
     write_two_texels(folder.file("wood.png"), Spectrum(0.3f, 0.2f, 0.1f), Spectrum(0.5f, 0.3f, 0.2f));
