@@ -37,6 +37,11 @@ int run_render(const RenderOptions& options, const Registry& registry);
 // `merge OUT INPUT...`: combines renders of one scene made from disjoint samples.
 int run_merge(const std::string& out, const std::vector<std::string>& inputs, bool quiet);
 
+class Image;
+// A number from an image's header, such as "freezeray:estimated_relative_mse" (negative when it is
+// absent or not a number). Defined in compare.cpp.
+double header_number(const Image& image, const std::string& key);
+
 struct CompareRequest;
 // `compare --make-reference OUT`: renders the reference for a comparison of request's scene, with
 // its one integrator and budget (time, samples or target_error), under reference_seed(request.seed).

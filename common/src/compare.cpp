@@ -20,6 +20,16 @@
 
 namespace freezeray {
 
+double header_number(const Image& image, const std::string& key) {
+    const auto it = image.metadata.find(key);
+    if (it == image.metadata.end()) return -1.0;
+    try {
+        return std::stod(it->second);
+    } catch (const std::exception&) {
+        return -1.0;
+    }
+}
+
 namespace {
 
 // How far past an equal-time budget a run may go before the report mentions it.
@@ -47,17 +57,6 @@ std::string describe_reference(const std::string& path, const Image& reference) 
         text += ")";
     }
     return text;
-}
-
-// A number from an image's header (negative when it is absent or not a number).
-double header_number(const Image& image, const std::string& key) {
-    const auto it = image.metadata.find(key);
-    if (it == image.metadata.end()) return -1.0;
-    try {
-        return std::stod(it->second);
-    } catch (const std::exception&) {
-        return -1.0;
-    }
 }
 
 // A reference rendered from the runs' own random numbers (same seed, overlapping sample

@@ -61,14 +61,7 @@ int run_make_reference(const CompareRequest& request, double target_error, const
     if (status != 0) return status;
 
     // What the reference is good for, from its own header.
-    const Image reference = read_image(out);
-    double own = -1.0;
-    if (const auto it = reference.metadata.find("freezeray:estimated_relative_mse"); it != reference.metadata.end()) {
-        try {
-            own = std::stod(it->second);
-        } catch (const std::exception&) {
-        }
-    }
+    const double own = header_number(read_image(out), "freezeray:estimated_relative_mse");
     if (own > 0.0) {
         std::fprintf(stderr,
                      "reference: %s, seed %llu (the comparison's is %llu), estimated relMSE %.3g: it measures errors "
