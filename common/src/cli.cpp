@@ -84,8 +84,10 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
     write_comparison_report(comparison, request.out_folder);
     for (const IntegratorRun& run : comparison.runs) {
         char slope[48] = "no fit";
-        if (run.fit.points > 0)
+        if (run.fit.has_interval())
             std::snprintf(slope, sizeof slope, "slope %.2f (%.2f to %.2f)", run.fit.slope, run.fit.slope_low, run.fit.slope_high);
+        else if (run.fit.points > 0)
+            std::snprintf(slope, sizeof slope, "slope %.2f (no interval)", run.fit.slope);
         std::fprintf(stderr, "%-12s %8llu spp %8.2f s  relMSE %-10.4g%s  %s\n", run.integrator.c_str(),
                      static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, run.relative_mse,
                      run.error_is_estimated ? " (estimated)" : "", slope);

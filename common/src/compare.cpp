@@ -8,6 +8,7 @@
 #include "freezeray/metrics.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/registry.hpp"
+#include "freezeray/render_state.hpp"
 #include "freezeray/scene.hpp"
 
 #include <algorithm>
@@ -155,8 +156,10 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
         IntegratorRun run;
         run.integrator = request.integrators[i];
         RenderSettings run_settings = settings;
-        // At every pass boundary (1, 2, 4, ... spp) record the error so far; this time is not
-        // counted as render time.
+        // At every pass boundary (1, 2, 4, ... spp) record the error so far, and that of the
+        // pass's own samples (the film less the previous checkpoint's); this time is not counted
+        // as render time.
+        std::optional<Film> previous;
         run_settings.on_pass = [&](const Film& film, std::uint64_t spp, double seconds) {
             Checkpoint c;
             c.seconds = seconds;
@@ -167,13 +170,21 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
                 c.mse = mse(image, *comparison.reference);
                 c.relative_mse = relative_mse(image, *comparison.reference);
             }
+            if (previous && !run.checkpoints.empty() && spp > run.checkpoints.back().samples_per_pixel) {
+                const Film pass = samples_added(film, *previous);
+                c.pass_seconds = seconds - run.checkpoints.back().seconds;
+                c.pass_samples_per_pixel = spp - run.checkpoints.back().samples_per_pixel;
+                c.pass_estimated_relative_mse = pass.estimated_relative_mse();
+                if (comparison.reference) c.pass_relative_mse = relative_mse(pass.mean(), *comparison.reference);
+            }
+            previous = film.clone();
             run.checkpoints.push_back(c);
         };
         Progress progress(request.quiet, run.integrator);
         run.result = integrators[i]->render(scene, run_settings, progress);
         // A pass that cannot be cut (one sample per pixel, a batch of splatted paths) can run past
         // the budget: then the comparison is not quite at equal time, and the report says so.
-        if (request.time_seconds > 0.0 && run.result.seconds > OvershootTolerance * request.time_seconds) {
+        if (comparison.equal_time && run.result.seconds > OvershootTolerance * request.time_seconds) {
             char text[160];
             std::snprintf(text, sizeof text, "ran %.2f s of its %g s budget (%+.0f%%): its errors are for that time",
                           run.result.seconds, request.time_seconds, 100.0 * (run.result.seconds / request.time_seconds - 1.0));
@@ -199,6 +210,14 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
             if (comparison.reference) {
                 last.mse = run.mse;
                 last.relative_mse = run.raw_relative_mse;
+            }
+            if (previous && run.result.film && !run.checkpoints.empty() &&
+                last.samples_per_pixel > run.checkpoints.back().samples_per_pixel) {
+                const Film pass = samples_added(*run.result.film, *previous);
+                last.pass_seconds = last.seconds - run.checkpoints.back().seconds;
+                last.pass_samples_per_pixel = last.samples_per_pixel - run.checkpoints.back().samples_per_pixel;
+                last.pass_estimated_relative_mse = pass.estimated_relative_mse();
+                if (comparison.reference) last.pass_relative_mse = relative_mse(pass.mean(), *comparison.reference);
             }
             run.checkpoints.push_back(last);
         }

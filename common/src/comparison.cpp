@@ -11,10 +11,25 @@
 
 namespace freezeray {
 
-double checkpoint_error(const Checkpoint& c, double reference_relative_mse) {
-    if (c.relative_mse < 0.0) return c.estimated_relative_mse;
-    const double error = less_reference_noise(c.relative_mse, reference_relative_mse);
+namespace {
+
+// A relMSE as fits and plots read it: measured against the reference when there is one (less
+// the reference's own, none below its floor), else estimated from the variance.
+double read_error(double measured, double estimated, double reference_relative_mse) {
+    if (measured < 0.0) return estimated;
+    const double error = less_reference_noise(measured, reference_relative_mse);
     return error >= reference_floor(reference_relative_mse) && error > 0.0 ? error : -1.0;
+}
+
+}  // namespace
+
+double checkpoint_error(const Checkpoint& c, double reference_relative_mse) {
+    return read_error(c.relative_mse, c.estimated_relative_mse, reference_relative_mse);
+}
+
+double pass_error(const Checkpoint& c, double reference_relative_mse) {
+    if (!(c.pass_seconds > 0.0)) return -1.0;
+    return read_error(c.pass_relative_mse, c.pass_estimated_relative_mse, reference_relative_mse);
 }
 
 double less_reference_noise(double measured_relative_mse, double reference_relative_mse) {
@@ -68,6 +83,36 @@ LogPoints log_points(const std::vector<Checkpoint>& checkpoints, double referenc
     return points;
 }
 
+// The same for the passes alone: (log10 of a pass's own time, log10 of its own samples' relMSE).
+// The first checkpoint has no pass before it; the pass from 1 to 2 spp is all render time.
+LogPoints pass_log_points(const std::vector<Checkpoint>& checkpoints, double reference_relative_mse) {
+    LogPoints points;
+    for (const Checkpoint& c : checkpoints) {
+        const double error = pass_error(c, reference_relative_mse);
+        if (error > 0.0 && std::isfinite(error)) {
+            points.x.push_back(std::log10(c.pass_seconds));
+            points.y.push_back(std::log10(error));
+        }
+    }
+    return points;
+}
+
+// Why a set of points cannot carry a fit, or empty when it can.
+std::string unfit_reason(const LogPoints& p, const char* what) {
+    const std::size_t n = p.x.size();
+    if (n < static_cast<std::size_t>(ConvergenceFit::MinimumPoints))
+        return std::to_string(n) + " " + what + (n == 1 ? "" : "s") + ", " +
+               std::to_string(ConvergenceFit::MinimumPoints) + " needed";
+    const auto [low, high] = std::minmax_element(p.x.begin(), p.x.end());
+    const double span = std::pow(10.0, *high - *low);
+    if (span < ConvergenceFit::MinimumTimeSpan) {
+        char text[96];
+        std::snprintf(text, sizeof text, "%ss span %.1fx in time, %.0fx needed", what, span, ConvergenceFit::MinimumTimeSpan);
+        return text;
+    }
+    return {};
+}
+
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
@@ -78,22 +123,21 @@ double median(std::vector<double> values) {
 
 // BOOK(fit-convergence)
 ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, double reference_relative_mse) {
-    const LogPoints p = log_points(checkpoints, reference_relative_mse);
+    // The passes' own errors are independent of each other, so Sen's interval holds for them;
+    // the cumulative checkpoints' are not (each image holds all the samples of the one before),
+    // their points lie too smoothly on a line and an interval from them would be too narrow.
+    // Both follow the same curve: the relMSE of a mean of M samples does not depend on which
+    // M they are, so a pass of duration d has the error a whole render of duration d would have.
     ConvergenceFit fit;
+    LogPoints p = pass_log_points(checkpoints, reference_relative_mse);
+    fit.from_passes = unfit_reason(p, "pass").empty();
+    if (!fit.from_passes) {
+        p = log_points(checkpoints, reference_relative_mse);
+        fit.no_fit_reason = unfit_reason(p, "checkpoint");
+        if (!fit.no_fit_reason.empty()) return fit;
+    }
     const std::size_t n = p.x.size();
-    if (n < static_cast<std::size_t>(ConvergenceFit::MinimumPoints)) {
-        fit.no_fit_reason = std::to_string(n) + (n == 1 ? " checkpoint" : " checkpoints") + ", " +
-                            std::to_string(ConvergenceFit::MinimumPoints) + " needed";
-        return fit;
-    }
-    const double span = std::pow(10.0, p.x.back() - p.x.front());
-    if (span < ConvergenceFit::MinimumTimeSpan) {
-        char text[96];
-        std::snprintf(text, sizeof text, "checkpoints span %.1fx in time, %.0fx needed", span, ConvergenceFit::MinimumTimeSpan);
-        fit.no_fit_reason = text;
-        return fit;
-    }
-    // Theil-Sen: the median of the slopes between every pair of checkpoints (at different times).
+    // Theil-Sen: the median of the slopes between every pair of points (at different times).
     std::vector<double> slopes;
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j)
@@ -107,6 +151,8 @@ ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, doubl
     std::vector<double> intercepts(n);
     for (std::size_t i = 0; i < n; ++i) intercepts[i] = p.y[i] - fit.slope * p.x[i];
     fit.intercept = median(intercepts);
+    fit.points = static_cast<int>(n);
+    if (!fit.from_passes) return fit;  // no interval from correlated points
     // Sen's 95% interval: the slopes of ranks (N -+ C) / 2 among the N sorted ones, with
     // C = 1.96 sqrt(n (n - 1) (2n + 5) / 18), the normal approximation to Kendall's tau's spread
     // (Sen 1968; Hollander and Wolfe, "Nonparametric Statistical Methods", 1973, section 9.3).
@@ -118,7 +164,6 @@ ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, doubl
     };
     fit.slope_low = at_rank((count - c) / 2.0);
     fit.slope_high = at_rank((count + c) / 2.0 + 1.0);
-    fit.points = static_cast<int>(n);
     return fit;
 }
 // END BOOK

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -105,6 +106,37 @@ Film merge_films(const Film& a, const Film& b) {
     }
     merged.invalid_samples_ += b.invalid_samples_.load();
     return merged;
+}
+
+Film samples_added(const Film& total, const Film& earlier) {
+    if (total.width() != earlier.width() || total.height() != earlier.height())
+        throw InputError("samples_added", "the films differ in size: " + std::to_string(total.width()) + "x" +
+                                              std::to_string(total.height()) + " and " + std::to_string(earlier.width()) +
+                                              "x" + std::to_string(earlier.height()));
+    Film added(total.width(), total.height());
+    for (std::size_t i = 0; i < added.pixels_.size(); ++i) {
+        const Film::Pixel& t = total.pixels_[i];
+        const Film::Pixel& e = earlier.pixels_[i];
+        if (e.count > t.count)
+            throw InputError("samples_added", "pixel " + std::to_string(i) + " has " + std::to_string(e.count) +
+                                                  " samples in the earlier film but " + std::to_string(t.count) + " in the later");
+        Film::Pixel& a = added.pixels_[i];
+        a.count = t.count - e.count;
+        if (a.count == 0) continue;
+        const double n = static_cast<double>(t.count), n_earlier = static_cast<double>(e.count);
+        const double n_added = static_cast<double>(a.count);
+        for (int c = 0; c < 3; ++c) {
+            // merge_films solved for the added part: n mean = n_e mean_e + n_a mean_a, and
+            // m2 = m2_e + m2_a + delta^2 n_e n_a / n with delta = mean_a - mean_e.
+            a.mean[c] = (n * t.mean[c] - n_earlier * e.mean[c]) / n_added;
+            const double delta = a.mean[c] - e.mean[c];
+            // The difference of two rounded sums: a few ulps below zero where the added samples
+            // are all equal, which is zero.
+            a.m2[c] = std::max(0.0, t.m2[c] - e.m2[c] - delta * delta * n_earlier * n_added / n);
+        }
+    }
+    added.invalid_samples_ = total.invalid_samples_.load() - std::min(total.invalid_samples_.load(), earlier.invalid_samples_.load());
+    return added;
 }
 
 }  // namespace freezeray

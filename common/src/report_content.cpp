@@ -161,7 +161,7 @@ AccuracyTable accuracy_table(const Comparison& comparison) {
                 texts.push_back(format_number(time->seconds) + " s (measured)");
             } else if (time->beyond_limit) {
                 texts.push_back("> " + format_number(TimeToAccuracy::ExtrapolationLimit) + "× budget (not measured)");
-            } else if (run.fit.points > 0 && !run.fit.agrees_with_unbiased_rate()) {
+            } else if (run.fit.disagrees_with_unbiased_rate()) {
                 texts.push_back(format_number(time->seconds) + " s along slope −1, which its fit contradicts");
             } else {
                 texts.push_back(format_number(time->seconds) + " s (along slope −1)");
@@ -210,9 +210,12 @@ std::string describe_fit(const IntegratorRun& run) {
         return "slope " + format_slope(fit.slope) + " from " + std::to_string(fit.points) +
                " checkpoints: the estimated error rises with time, so it is not yet reliable (rare bright paths are "
                "still being found; the estimate is too low until they stop)";
+    if (!fit.has_interval())
+        return "slope " + format_slope(fit.slope) + " from " + std::to_string(fit.points) +
+               " checkpoints (no interval: they share their samples)";
     std::string text = "slope " + format_slope(fit.slope) + " (95 %: " + format_slope(fit.slope_low) + " to " +
-                       format_slope(fit.slope_high) + ") from " + std::to_string(fit.points) + " checkpoints";
-    if (!fit.agrees_with_unbiased_rate())
+                       format_slope(fit.slope_high) + ") from " + std::to_string(fit.points) + " passes";
+    if (fit.disagrees_with_unbiased_rate())
         text += "; not −1, the unbiased rate: fireflies still being found, bias, or a reference not converged";
     return text;
 }
@@ -247,8 +250,11 @@ std::vector<std::string> how_to_read(const Comparison& comparison) {
         "it ran: an integrator twice as efficient reaches the same error in half the time.",
         "On the log–log plot of error against time, an unbiased estimator's line is straight with slope −1: "
         "the MSE halves when the time doubles (the grey guide). The dashed lines are robust fits (Theil–Sen: the "
-        "median of the slopes between pairs of checkpoints, from at least 4 checkpoints spanning at least 4× in "
-        "time; the table gives each slope's 95 % interval); a slope whose interval excludes −1 shows fireflies "
+        "median of the slopes between pairs of points) to each pass's own samples, whose errors are independent "
+        "(the checkpoints' are not: each image holds the samples of the one before), against the pass's own time "
+        "— a pass of d seconds has the error a whole render of d seconds would have, so the line it gives runs "
+        "through the checkpoints; at least 4 passes spanning at least 4× in time; the table gives each slope's 95 % "
+        "interval; a slope whose interval excludes −1 shows fireflies "
         "still being found, bias, or a reference that is itself not converged. "
         "Time to accuracy reads the curves at a target error: measured when the run got there, else read along "
         "the line of slope −1 through its checkpoints, and given as a number only up to 10× the run's time.",

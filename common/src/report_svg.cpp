@@ -233,7 +233,7 @@ std::string convergence_plot_svg(const Comparison& comparison, SvgUse use) {
         svg += marker(i, LegendX + 15, y, run_colour(i));
         svg += text_element(LegendX + 38, y + 5, legend_name(run.integrator), " font-size=\"15\"");
         const std::string slope = run.fit.points > 0 ? "slope " + format_slope(run.fit.slope) +
-                                                           (run.fit.agrees_with_unbiased_rate() ? "" : " (not −1)")
+                                                           (run.fit.disagrees_with_unbiased_rate() ? " (not −1)" : "")
                                                      : "no fit";
         svg += text_element(LegendX + 38, y + 23, slope, " font-size=\"13\" fill=\"#444444\"");
     }

@@ -154,9 +154,11 @@ std::string csv_signed(double value) {
 // convergence.csv: one row per checkpoint of every run, checkpoints numbered from 1.
 std::string convergence_csv(const Comparison& comparison) {
     // relative_mse as measured against the reference; relative_mse_less_reference without the
-    // reference's own noise (empty when the reference does not give it).
+    // reference's own noise (empty when the reference does not give it). The pass_ columns are
+    // those of the pass that ended at the checkpoint, alone (its own samples; empty for the first).
     std::string csv = "integrator,checkpoint,seconds,samples_per_pixel,mse,relative_mse,estimated_relative_mse,"
-                      "relative_mse_less_reference\n";
+                      "relative_mse_less_reference,pass_seconds,pass_samples_per_pixel,pass_relative_mse,"
+                      "pass_estimated_relative_mse\n";
     for (const IntegratorRun& run : comparison.runs) {
         for (std::size_t i = 0; i < run.checkpoints.size(); ++i) {
             const Checkpoint& c = run.checkpoints[i];
@@ -166,7 +168,9 @@ std::string convergence_csv(const Comparison& comparison) {
                    (c.relative_mse >= 0.0 && comparison.reference_relative_mse > 0.0
                         ? csv_signed(less_reference_noise(c.relative_mse, comparison.reference_relative_mse))
                         : std::string()) +
-                   "\n";
+                   "," + csv_number(c.pass_seconds) + "," +
+                   (c.pass_seconds > 0.0 ? std::to_string(c.pass_samples_per_pixel) : std::string()) + "," +
+                   csv_number(c.pass_relative_mse) + "," + csv_number(c.pass_estimated_relative_mse) + "\n";
         }
     }
     return csv;
@@ -179,10 +183,13 @@ std::string time_to_accuracy_csv(const Comparison& comparison) {
     for (const IntegratorRun& run : comparison.runs) {
         for (const TimeToAccuracy& t : run.time_to_accuracy) {
             const bool finite = std::isfinite(t.seconds);
-            const char* how = t.measured      ? "measured"
-                              : !finite        ? "never"
-                              : t.beyond_limit ? "along slope -1 (beyond 10x the run's time)"
-                                               : "along slope -1";
+            char beyond[64];
+            std::snprintf(beyond, sizeof beyond, "along slope -1 (beyond %gx the run's time)",
+                          TimeToAccuracy::ExtrapolationLimit);
+            const std::string how = t.measured      ? "measured"
+                                    : !finite        ? "never"
+                                    : t.beyond_limit ? beyond
+                                                     : "along slope -1";
             csv += csv_text(run.integrator) + "," + csv_number(t.target) + "," + csv_number(finite ? t.seconds : -1.0) +
                    "," + how + "\n";
         }

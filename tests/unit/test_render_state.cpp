@@ -81,6 +81,39 @@ TEST_CASE("merging two films equals one film of all their samples", "[unit][stat
     CHECK_THROWS_AS(merge_films(first, Film(3, 4)), InputError);
 }
 
+TEST_CASE("the samples a film gained since an earlier copy form the film of those samples alone", "[unit][state]") {
+    // Per pixel 5 samples, then 27 more: samples_added(total, earlier) must equal a film of the
+    // 27 alone (the inverse of merge_films), including a pixel whose added samples are all equal.
+    PCG32 random(21, 4);
+    Film total(4, 4), alone(4, 4);
+    for (int s = 0; s < 32; ++s)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) {
+                const bool constant = x == 0 && y == 0 && s >= 5;
+                const Spectrum v = constant ? Spectrum(0.25f) : Spectrum(random.next_float() * 10.0f, random.next_float(), 0.0f);
+                total.add_sample(x, y, v);
+                if (s >= 5) alone.add_sample(x, y, v);
+            }
+    Film earlier(4, 4);  // the same first 5 samples
+    PCG32 replay(21, 4);
+    for (int s = 0; s < 5; ++s)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x)
+                earlier.add_sample(x, y, Spectrum(replay.next_float() * 10.0f, replay.next_float(), 0.0f));
+    const Film added = samples_added(total, earlier);
+    CHECK(added.minimum_sample_count() == 27u);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x)
+            for (int c = 0; c < 3; ++c) {
+                CHECK(added.mean().at(x, y)[c] == Approx(alone.mean().at(x, y)[c]).epsilon(1e-6).margin(1e-9));
+                CHECK(added.variance_of_mean().at(x, y)[c] ==
+                      Approx(alone.variance_of_mean().at(x, y)[c]).epsilon(1e-5).margin(1e-9));
+            }
+    CHECK(added.variance_of_mean().at(0, 0)[0] >= 0.0f);  // all 27 equal: zero, not a rounding below it
+    CHECK_THROWS_AS(samples_added(total, Film(3, 4)), InputError);
+    CHECK_THROWS_AS(samples_added(earlier, total), InputError);  // the earlier film has more samples
+}
+
 TEST_CASE("a render interrupted mid-pass and resumed equals the uninterrupted render bit for bit", "[unit][state]") {
     // The stop flag is raised from another thread at an arbitrary moment, so some pixels of the
     // interrupted pass have more samples than others; the resumed render goes on per pixel.

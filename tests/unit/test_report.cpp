@@ -79,6 +79,12 @@ IntegratorRun make_run(const std::string& name, const Image& reference, bool has
             checkpoint.mse = final_mse * scale;
             checkpoint.relative_mse = final_relative * scale;
         }
+        if (k > 0) {  // the pass from 2^(k-1) to 2^k spp: half the samples, twice the error
+            checkpoint.pass_samples_per_pixel = std::uint64_t(1) << (k - 1);
+            checkpoint.pass_seconds = seconds_per_sample * double(checkpoint.pass_samples_per_pixel);
+            checkpoint.pass_estimated_relative_mse = 2.0 * checkpoint.estimated_relative_mse;
+            if (has_reference) checkpoint.pass_relative_mse = 2.0 * checkpoint.relative_mse;
+        }
         run.checkpoints.push_back(checkpoint);
     }
     run.error_is_estimated = !has_reference;
@@ -204,13 +210,14 @@ TEST_CASE("convergence.csv has one full-precision row per checkpoint", "[unit][r
     const std::vector<std::string> lines = split(read_text(temporary.file("report/convergence.csv")), '\n');
 
     REQUIRE(lines.front() == "integrator,checkpoint,seconds,samples_per_pixel,mse,relative_mse,estimated_relative_mse,"
-                             "relative_mse_less_reference");
+                             "relative_mse_less_reference,pass_seconds,pass_samples_per_pixel,pass_relative_mse,"
+                             "pass_estimated_relative_mse");
     std::size_t line = 1;
     for (const IntegratorRun& run : comparison.runs) {
         for (std::size_t i = 0; i < run.checkpoints.size(); ++i, ++line) {
             REQUIRE(line < lines.size());
             const std::vector<std::string> fields = split(lines[line], ',');
-            REQUIRE(fields.size() == 8);
+            REQUIRE(fields.size() == 12);
             CHECK(fields[7].empty());  // the reference does not give its own error
             const Checkpoint& expected = run.checkpoints[i];
             CHECK(fields[0] == run.integrator);
@@ -224,6 +231,16 @@ TEST_CASE("convergence.csv has one full-precision row per checkpoint", "[unit][r
                 } else {
                     CHECK(std::strtod(fields[4 + k].c_str(), nullptr) == Approx(values[k]).epsilon(1e-8));
                 }
+            }
+            // The pass that ended here: none before the first checkpoint.
+            if (i == 0) {
+                for (int k = 8; k < 12; ++k) CHECK(fields[k].empty());
+            } else {
+                CHECK(std::strtod(fields[8].c_str(), nullptr) == Approx(expected.pass_seconds).epsilon(1e-8));
+                CHECK(fields[9] == std::to_string(expected.pass_samples_per_pixel));
+                CHECK(std::strtod(fields[10].c_str(), nullptr) == Approx(expected.pass_relative_mse).epsilon(1e-8));
+                CHECK(std::strtod(fields[11].c_str(), nullptr) ==
+                      Approx(expected.pass_estimated_relative_mse).epsilon(1e-8));
             }
         }
     }

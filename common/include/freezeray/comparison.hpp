@@ -19,6 +19,14 @@ struct Checkpoint {
     double mse = -1.0;                     // against the reference; negative without one
     double relative_mse = -1.0;            // against the reference, its noise included; negative without one
     double estimated_relative_mse = -1.0;  // from the film's per-pixel variance (no reference)
+    // The same for the pass that ended here alone: the samples added since the previous
+    // checkpoint (samples_added), its own time and errors. Cumulative images share their samples,
+    // so their errors are correlated; the passes' are independent, which is what a fit's
+    // confidence interval assumes. Negative when unknown (the first checkpoint has no pass before it).
+    double pass_seconds = -1.0;
+    std::uint64_t pass_samples_per_pixel = 0;
+    double pass_relative_mse = -1.0;            // against the reference, its noise included
+    double pass_estimated_relative_mse = -1.0;  // from the pass's own per-pixel variance
 };
 
 // A reference is itself a render with noise of its own. For a run x and a reference r whose
@@ -35,26 +43,35 @@ double reference_floor(double reference_relative_mse);
 // The relMSE of a checkpoint as fits and plots read it: measured when there is a reference (less
 // the reference's own; negative, i.e. none, below the reference's floor), else estimated.
 double checkpoint_error(const Checkpoint& checkpoint, double reference_relative_mse);
+// The same for the checkpoint's pass alone (negative when its pass is unknown).
+double pass_error(const Checkpoint& checkpoint, double reference_relative_mse);
 
-// The line log10(relMSE) = intercept + slope log10(seconds) through a run's checkpoints, fitted
-// robustly: the Theil-Sen estimator (Theil 1950; Sen 1968), whose slope is the median of the
-// slopes between every pair of checkpoints, so that one firefly moves it little, with Sen's 95%
-// confidence interval. An unbiased Monte Carlo estimator has slope -1 once the per-sample cost is
-// steady; a fit whose interval excludes -1 signals fireflies still being found, bias, or a
-// reference that is itself not converged.
+// The line log10(relMSE) = intercept + slope log10(seconds) a run follows, fitted robustly: the
+// Theil-Sen estimator (Theil 1950; Sen 1968), whose slope is the median of the slopes between
+// every pair of points, so that one firefly moves it little, with Sen's 95% confidence interval.
+// The points are the passes' own errors against their own durations (independent, so the
+// interval holds); from cumulative checkpoints alone, which share their samples, the slope is
+// given without an interval. An unbiased Monte Carlo estimator has slope -1 once the per-sample
+// cost is steady; a fit whose interval excludes -1 signals fireflies still being found, bias, or
+// a reference that is itself not converged.
 struct ConvergenceFit {
-    static constexpr int MinimumPoints = 4;          // checkpoints a fit needs
-    static constexpr double MinimumTimeSpan = 4.0;   // and the ratio of their last to first time
+    static constexpr int MinimumPoints = 4;          // points a fit needs
+    static constexpr double MinimumTimeSpan = 4.0;   // and the ratio of their longest to shortest time
 
     double slope = 0.0;
     double intercept = 0.0;               // log10(relMSE) at 1 second
-    double slope_low = 0.0, slope_high = 0.0;  // the slope's 95% confidence interval
-    int points = 0;                       // checkpoints used (0: no fit)
+    double slope_low = 0.0, slope_high = 0.0;  // the slope's 95% confidence interval (from_passes)
+    int points = 0;                       // points used (0: no fit)
+    bool from_passes = false;             // fitted to the passes' own errors, with an interval
     std::string no_fit_reason;            // why there is no fit, when points == 0
     // The relMSE the fitted line predicts after `seconds`.
     double predict(double seconds) const;
+    // Whether the slope has a confidence interval (see from_passes).
+    bool has_interval() const { return points > 0 && from_passes; }
     // Whether -1, the unbiased rate, lies within the slope's confidence interval.
-    bool agrees_with_unbiased_rate() const { return points > 0 && slope_low <= -1.0 && -1.0 <= slope_high; }
+    bool agrees_with_unbiased_rate() const { return has_interval() && slope_low <= -1.0 && -1.0 <= slope_high; }
+    // Whether the interval excludes -1 (false when there is no interval).
+    bool disagrees_with_unbiased_rate() const { return has_interval() && !agrees_with_unbiased_rate(); }
 };
 
 // When a run reaches a target relMSE: measured (interpolated between checkpoints) when it got
@@ -167,9 +184,9 @@ struct Line {
 };
 Line fit_line(const std::vector<double>& x, const std::vector<double>& y);
 
-// Fits the checkpoints (those with a measured or else estimated relMSE > 0, skipping the very
-// first pass whose time is dominated by start-up): no fit from fewer than MinimumPoints of them
-// or from a span of less than MinimumTimeSpan in time.
+// Fits the passes' own errors when at least MinimumPoints of them (with an error > 0) span
+// MinimumTimeSpan in time; else the cumulative checkpoints' (skipping the very first pass, whose
+// time is dominated by start-up), without an interval; else no fit, with the reason.
 // Measured errors are taken less the reference's own relMSE (when >= 0), and those below its
 // floor are left out.
 ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, double reference_relative_mse = -1.0);

@@ -66,6 +66,7 @@ public:
     static Film read_state(std::istream& in, const std::string& where);
 
     friend Film merge_films(const Film& a, const Film& b);
+    friend Film samples_added(const Film& total, const Film& earlier);
 
 private:
     struct Pixel {

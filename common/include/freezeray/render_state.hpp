@@ -40,4 +40,11 @@ void check_resumable(const RenderStateInfo& saved, const RenderStateInfo& wanted
 // LeVeque, "Updating Formulae and a Pairwise Algorithm for Computing Sample Variances", 1979).
 Film merge_films(const Film& a, const Film& b);
 
+// The inverse: the film of the samples `total` holds beyond those of `earlier`, a film of the same
+// render taken at an earlier moment (per pixel, earlier's count at most total's). A comparison
+// reads each pass's own samples this way: they are independent of the earlier passes', where
+// the cumulative images that hold them are not. Throws InputError for films that differ in size
+// or where `earlier` has more samples than `total`.
+Film samples_added(const Film& total, const Film& earlier);
+
 }  // namespace freezeray
