@@ -65,6 +65,8 @@ nlohmann::json material_from_mtl(const MtlMaterial& m) {
         if (!m.map_kd.empty()) j["albedo_texture"] = m.map_kd;
     }
     if (!is_black(m.ke)) j["emission"] = colour(m.ke);
+    // An alpha mask cuts holes into the surface (chapter 02 reads it; see AlphaMask).
+    if (!m.map_d.empty()) j["alpha_texture"] = m.map_d;
     return j;
 }
 

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <algorithm>
 #include <map>
 #include <set>
 #include <fstream>
@@ -153,6 +154,10 @@ std::unique_ptr<Material> build_material(const std::string& name, const nlohmann
     material->name = name;
     material->type = type;
     material->emission = emission;
+    // An area light samples points all over its triangles; holes in it would be lit points that
+    // are not there.
+    if (material->alpha_mask && material->is_emissive())
+        throw InputError(p.where("emission"), "an emissive material cannot have an alpha mask (\"alpha\")");
     for (std::string& w : p.unused_key_warnings()) warnings.push_back(std::move(w));
     return material;
 }
@@ -183,8 +188,9 @@ void read_lights(const Parameters& top, const nlohmann::json& root, Scene& scene
 }
 
 // The MTL maps the renderer reads nothing from, said once per kind and file rather than dropped in
-// silence: alpha masks (map_d: cut-outs such as Sponza's leaves and chains render solid) and bump
-// or normal maps (map_bump / bump: shading uses the mesh's own normals).
+// silence: bump or normal maps (map_bump / bump: shading uses the mesh's own normals). (Alpha
+// masks, map_d, become the materials' "alpha"; a chapter without image textures says so as an
+// unused key.)
 std::vector<std::string> unused_maps_warnings(const std::vector<MtlMaterial>& materials) {
     std::vector<std::string> warnings;
     const auto warn = [&](std::string MtlMaterial::*map, const std::string& what) {
@@ -201,7 +207,6 @@ std::vector<std::string> unused_maps_warnings(const std::vector<MtlMaterial>& ma
         warnings.push_back(file + ": " + std::to_string(count) + " material" + (count == 1 ? "" : "s") + " (" + names +
                            ") name " + what);
     };
-    warn(&MtlMaterial::map_d, "an alpha mask (map_d), which this renderer does not cut out: those surfaces render solid");
     warn(&MtlMaterial::map_bump,
          "a bump or normal map (map_bump, bump), which this renderer does not read: shading uses the mesh's normals");
     return warnings;
@@ -379,6 +384,8 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     scene.accelerator = registry.make_accelerator(scene.accelerator_name, accelerator_where, &accelerator_options.parameters());
     for (std::string& w : accelerator_options.parameters().unused_key_warnings()) scene.warnings.push_back(std::move(w));
     scene.accelerator->build(scene.meshes);
+    scene.has_alpha_masks = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                        [](const std::unique_ptr<Material>& m) { return m->alpha_mask != nullptr; });
     scene.effects = compute_scene_effects(scene);
     return scene;
 }

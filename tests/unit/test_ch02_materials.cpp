@@ -18,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -291,7 +292,7 @@ TEST_CASE("an MTL metal's colour is its Kd, or its Ks when Kd is black (the clas
     CHECK(j["specular_reflectance"] == nlohmann::json({0.928047f, 0.917804f, 0.918909f}));
 }
 
-TEST_CASE("MTL alpha masks and bump maps the renderer does not read are named in a warning", "[unit][materials][scene]") {
+TEST_CASE("MTL alpha masks become cut-outs; bump maps, which the renderer does not read, are named in a warning", "[unit][materials][scene]") {
     const TemporaryFolder folder;
     write_two_texels(folder.file("mask.png"), Spectrum(0.0f), Spectrum(1.0f));
     std::ofstream(folder.file("plants.mtl")) << "newmtl leaf\nKd 0.5 0.5 0.5\nmap_d mask.png\nmap_bump mask.png\n\n"
@@ -303,10 +304,86 @@ TEST_CASE("MTL alpha masks and bump maps the renderer does not read are named in
         << R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov_vertical_degrees": 40, "resolution": [4, 4]},
               "meshes": [{"file": "plants.obj"}]})";
     const Scene scene = load_scene(folder.file("scene.json"), chapter02_registry());
-    REQUIRE(scene.warnings.size() == 2u);
-    CHECK_THAT(scene.warnings[0], Catch::Contains("plants.mtl: 1 material (leaf) name an alpha mask (map_d)") &&
-                                      Catch::Contains("render solid"));
-    CHECK_THAT(scene.warnings[1], Catch::Contains("plants.mtl: 2 materials (leaf, vine) name a bump or normal map"));
+    REQUIRE(scene.warnings.size() == 1u);
+    CHECK_THAT(scene.warnings[0], Catch::Contains("plants.mtl: 2 materials (leaf, vine) name a bump or normal map"));
+    CHECK(scene.has_alpha_masks);
+    REQUIRE(scene.materials.size() == 3u);
+    CHECK(scene.materials[0]->alpha_mask != nullptr);  // leaf
+    CHECK(scene.materials[1]->alpha_mask == nullptr);
+    // Chapter 01 has no image textures: the mask is an unused key, and said to be.
+    Registry chapter01("ch01", 1);
+    register_chapter01(chapter01);
+    const Scene solid = load_scene(folder.file("scene.json"), chapter01);
+    CHECK_FALSE(solid.has_alpha_masks);
+    CHECK(std::any_of(solid.warnings.begin(), solid.warnings.end(),
+                      [](const std::string& w) { return w.find("alpha_texture") != std::string::npos; }));
+}
+
+namespace {
+
+// A 2 x 2 quad in the plane z = 1 (texture u from 0 at x = -1 to 1 at x = 1) in front of an opaque
+// wall at z = 2, the quad's material given by `quad`. Rays go along +z from z = 0.
+std::string write_cutout_scene(const TemporaryFolder& folder, const std::string& quad) {
+    std::ofstream(folder.file("quad.obj")) << "v -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                              "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+    std::ofstream(folder.file("wall.obj")) << "v -5 -5 2\nv 5 -5 2\nv 5 5 2\nv -5 5 2\nf 1 2 3\nf 1 3 4\n";
+    std::ofstream(folder.file("scene.json"))
+        << R"({"camera": {"position": [0, 0, -1], "look_at": [0, 0, 1], "fov_vertical_degrees": 40, "resolution": [4, 4]},
+              "materials": {"leaf": )" << quad << R"(, "stone": {"type": "diffuse", "albedo": 0.5}},
+              "meshes": [{"file": "quad.obj", "material": "leaf"}, {"file": "wall.obj", "material": "stone"}]})";
+    return folder.file("scene.json");
+}
+
+}  // namespace
+
+TEST_CASE("rays pass through the holes of an alpha mask and stop at its solid parts", "[unit][materials][scene]") {
+    const TemporaryFolder folder;
+    // Left texel a hole, right texel solid: bilinear filtering crosses one half at u = 1/2, x = 0.
+    write_two_texels(folder.file("mask.png"), Spectrum(0.0f), Spectrum(1.0f));
+    const Scene scene = load_scene(
+        write_cutout_scene(folder, R"({"type": "diffuse", "albedo": 0.5, "alpha_texture": {"file": "mask.png", "wrap": "clamp"}})"),
+        chapter02_registry());
+    REQUIRE(scene.has_alpha_masks);
+    const Vec3 forward(0.0f, 0.0f, 1.0f);
+    for (const float x : {-0.9f, -0.6f, -0.3f}) {  // the hole: straight on to the wall, t from the ray's own origin
+        INFO("x = " << x);
+        const std::optional<Hit> hit = scene.intersect(Ray{Vec3(x, 0.3f, 0.0f), forward});
+        REQUIRE(hit);
+        CHECK(hit->material == 1u);
+        CHECK(hit->t == Approx(2.0f).epsilon(1e-5));
+        CHECK(hit->position.z == Approx(2.0f));
+        CHECK_FALSE(scene.occluded(Ray{Vec3(x, 0.3f, 0.0f), forward, 1.5f}));  // only the hole before z = 1.5
+        CHECK(scene.occluded(Ray{Vec3(x, 0.3f, 0.0f), forward, 3.0f}));        // the wall
+        CHECK_FALSE(scene.intersect(Ray{Vec3(x, 0.3f, 0.0f), forward, 1.5f}));
+    }
+    for (const float x : {0.3f, 0.6f, 0.9f}) {  // solid
+        INFO("x = " << x);
+        const std::optional<Hit> hit = scene.intersect(Ray{Vec3(x, 0.3f, 0.0f), forward});
+        REQUIRE(hit);
+        CHECK(hit->material == 0u);
+        CHECK(hit->t == Approx(1.0f));
+        CHECK(scene.occluded(Ray{Vec3(x, 0.3f, 0.0f), forward, 1.5f}));
+    }
+    // From behind, the same holes.
+    const std::optional<Hit> back = scene.intersect(Ray{Vec3(-0.6f, 0.3f, 1.9f), -forward});
+    CHECK_FALSE(back);
+}
+
+TEST_CASE("an alpha mask without holes is dropped; an emissive one is refused", "[unit][materials][scene]") {
+    const TemporaryFolder folder;
+    write_two_texels(folder.file("opaque.png"), Spectrum(0.6f), Spectrum(1.0f));
+    const Scene whole = load_scene(
+        write_cutout_scene(folder, R"({"type": "diffuse", "albedo": 0.5, "alpha_texture": "opaque.png"})"), chapter02_registry());
+    CHECK_FALSE(whole.has_alpha_masks);  // every opacity is at least one half: nothing to cut out
+    const Scene gone = load_scene(write_cutout_scene(folder, R"({"type": "diffuse", "albedo": 0.5, "alpha": 0.2})"),
+                                  chapter02_registry());
+    CHECK(gone.has_alpha_masks);
+    CHECK(gone.intersect(Ray{Vec3(0.5f, 0.0f, 0.0f), Vec3(0.0f, 0.0f, 1.0f)})->material == 1u);
+    CHECK_THROWS_WITH(load_scene(write_cutout_scene(folder, R"({"type": "diffuse", "emission": 1, "alpha": 0.2})"),
+                                 chapter02_registry()),
+                      Catch::Contains("/materials/leaf/emission") && Catch::Contains("cannot have an alpha mask"));
+    CHECK_THROWS_WITH(load_scene(write_cutout_scene(folder, R"({"type": "diffuse", "alpha": 1.5})"), chapter02_registry()),
+                      Catch::Contains("/materials/leaf/alpha"));
 }
 
 TEST_CASE("MTL materials load as chapter 02 materials", "[unit][materials][scene]") {

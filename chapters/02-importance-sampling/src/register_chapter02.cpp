@@ -1,6 +1,7 @@
 // Chapter 02's registrations.
 #include "freezeray/ch02/register_chapter02.hpp"
 
+#include "freezeray/ch02/alpha_mask.hpp"
 #include "freezeray/ch02/materials.hpp"
 #include "freezeray/ch02/path_tracer.hpp"
 #include "freezeray/ch02/texture_storage.hpp"
@@ -60,7 +61,13 @@ std::unique_ptr<Material> make_mix_part(const Parameters& p, const MaterialConte
 }  // namespace
 
 void register_chapter02(Registry& registry) {
-    for (const MaterialEntry& entry : chapter02_materials) registry.add_material(entry.name, 2, entry.summary, entry.make);
+    // Every material of this chapter may have an alpha mask (cut-outs), read beside its own parameters.
+    for (const MaterialEntry& entry : chapter02_materials)
+        registry.add_material(entry.name, 2, entry.summary, [make = entry.make](const Parameters& p, const MaterialContext& c) {
+            std::unique_ptr<Material> material = make(p, c);
+            material->alpha_mask = ch02::read_alpha_mask(p, c);
+            return material;
+        });
     registry.add_texture_layout("linear", 2, "rows of texels one after another, as the image file stores them",
                                 [](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); });
     registry.add_integrator("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",

@@ -8,9 +8,23 @@
 #include "freezeray/scratch_arena.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace freezeray {
+
+// An alpha mask: where its opacity is below one half, the surface is not there and rays pass
+// through it (a cut-out: leaves, chains, fences drawn on a few quads). Scene::intersect and
+// Scene::occluded honour it; chapter 02 makes masks from image textures (a material's "alpha").
+class AlphaMask {
+public:
+    virtual ~AlphaMask() = default;
+    // The opacity at texture coordinates uv, in [0, 1].
+    virtual float opacity(const Vec2& uv) const = 0;
+    // Opacities below this are holes. A threshold, not a blend: the surface is either there or not,
+    // so the estimator stays the same (pbrt-v3 tests alpha masks the same way, against 0).
+    static constexpr float CutoutThreshold = 0.5f;
+};
 
 class Material {
 public:
@@ -29,6 +43,12 @@ public:
     Spectrum emission{0.0f};
     bool is_emissive() const { return !is_black(emission); }
 
+    // Null for an opaque material (the usual case).
+    std::shared_ptr<const AlphaMask> alpha_mask;
+    // True when `hit` falls in a hole of the alpha mask.
+    bool is_cut_out(const Hit& hit) const {
+        return alpha_mask != nullptr && alpha_mask->opacity(hit.uv) < AlphaMask::CutoutThreshold;
+    }
     std::string name;  // the MTL or JSON name
     std::string type;  // the registry name it was made with ("diffuse", ...)
 };

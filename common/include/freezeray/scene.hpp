@@ -59,8 +59,17 @@ public:
     RenderDefaults defaults;
     std::vector<std::string> warnings;          // printed by the command line after loading
 
-    std::optional<Hit> intersect(const Ray& ray) const { return accelerator->intersect(ray); }
-    bool occluded(const Ray& ray) const { return accelerator->occluded(ray); }
+    // The closest hit along the ray, and whether anything blocks it. Surfaces whose alpha mask
+    // cuts them out where the ray meets them are passed through (scene_intersection.cpp).
+    std::optional<Hit> intersect(const Ray& ray) const {
+        return has_alpha_masks ? intersect_through_cutouts(ray) : accelerator->intersect(ray);
+    }
+    bool occluded(const Ray& ray) const {
+        return has_alpha_masks ? occluded_through_cutouts(ray) : accelerator->occluded(ray);
+    }
+    bool has_alpha_masks = false;               // some material has an alpha mask (set by load_scene)
+    // The most cut-out surfaces one ray passes through; a ray that meets more stops at the last.
+    static constexpr int MaxCutoutCrossings = 64;
     const Material& material(const Hit& hit) const { return *materials[hit.material]; }
 
     // Radiance arriving along a ray that leaves the scene: the environment's, or black.
@@ -82,6 +91,10 @@ public:
     // emitters has an empty vector.
     static constexpr std::uint32_t NoLight = 0xffffffffu;
     std::vector<std::vector<std::uint32_t>> triangle_lights;
+
+private:
+    std::optional<Hit> intersect_through_cutouts(const Ray& ray) const;
+    bool occluded_through_cutouts(const Ray& ray) const;
 };
 
 struct SceneLoadOptions {
