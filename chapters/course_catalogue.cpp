@@ -34,6 +34,7 @@ const std::vector<CatalogueEntry>& course_catalogue() {
         {CapabilityKind::Integrator, "light-tracing", 4},
         {CapabilityKind::Integrator, "mlt", 5},
         {CapabilityKind::Integrator, "mlt-multiplexed", 5},
+        {CapabilityKind::Integrator, "auto", 5},
         {CapabilityKind::Accelerator, "kdtree", 6},
         {CapabilityKind::Integrator, "traversal-cost", 6},
         {CapabilityKind::Accelerator, "kdtree-simd", 7},

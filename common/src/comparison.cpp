@@ -255,13 +255,46 @@ bool Agreement::disagree() const {
 // END BOOK
 
 std::vector<RunAgreement> pairwise_agreements(const std::vector<IntegratorRun>& runs) {
+    std::vector<const RenderResult*> results;
+    for (const IntegratorRun& run : runs) results.push_back(&run.result);
+    return pairwise_agreements(results);
+}
+
+std::vector<RunAgreement> pairwise_agreements(const std::vector<const RenderResult*>& results) {
     std::vector<RunAgreement> result;
-    for (std::size_t i = 0; i < runs.size(); ++i)
-        for (std::size_t j = i + 1; j < runs.size(); ++j) {
-            const Agreement agree = agreement(runs[i].result, runs[j].result);
+    for (std::size_t i = 0; i < results.size(); ++i)
+        for (std::size_t j = i + 1; j < results.size(); ++j) {
+            const Agreement agree = agreement(*results[i], *results[j]);
             if (agree.terms > 0 || agree.one_sided > 0) result.push_back({i, j, agree});  // else no variances
         }
     return result;
+}
+
+std::optional<std::size_t> odd_one_out(const std::vector<RunAgreement>& agreements, std::size_t runs) {
+    if (runs < 3) return std::nullopt;
+    // excess[i][j]: D - 1 for the pair, when it disagrees; 0 when it agrees; NaN when unknown.
+    const double unknown = std::numeric_limits<double>::quiet_NaN();
+    std::vector<std::vector<double>> excess(runs, std::vector<double>(runs, unknown));
+    for (const RunAgreement& pair : agreements)
+        if (pair.first < runs && pair.second < runs)
+            excess[pair.first][pair.second] = excess[pair.second][pair.first] =
+                pair.agreement.disagree() ? pair.agreement.statistic - 1.0 : 0.0;
+    for (std::size_t i = 0; i < runs; ++i) {
+        double smallest_own = std::numeric_limits<double>::infinity(), largest_others = 0.0;
+        bool known = true;
+        for (std::size_t j = 0; j < runs; ++j) {
+            if (j == i) continue;
+            known = known && !std::isnan(excess[i][j]);
+            smallest_own = std::min(smallest_own, excess[i][j]);
+            for (std::size_t k = j + 1; k < runs; ++k)
+                if (k != i) {
+                    known = known && !std::isnan(excess[j][k]);
+                    largest_others = std::max(largest_others, excess[j][k]);
+                }
+        }
+        if (known && smallest_own > 0.0 && smallest_own >= OddOneOutRatio * largest_others) return i;
+    }
+    return std::nullopt;
 }
 
 std::vector<CropRegion> highest_error_regions(const std::vector<IntegratorRun>& runs, const Image& reference,

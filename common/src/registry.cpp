@@ -185,6 +185,11 @@ std::unique_ptr<Integrator> Registry::make_integrator(const std::string& name, c
     return it->second.second(settings, options != nullptr ? *options : no_parameters());
 }
 
+IntegratorFactory Registry::integrator_factory(const std::string& name) const {
+    const auto it = integrators_.find(name);
+    return it != integrators_.end() ? it->second.second : IntegratorFactory{};
+}
+
 std::unique_ptr<Material> Registry::make_material(const std::string& type, const Parameters& parameters) const {
     return make_material(type, parameters, MaterialContext{*this, default_texture_layout_});
 }

@@ -178,7 +178,12 @@ int run_render(const RenderOptions& options, const Registry& registry) {
         result = integrator->render(scene, settings, progress);
     }
 
-    write_image(out, annotated_image(*result.film, info, result.seconds, result.interrupted), {options.exposure});
+    // An integrator that handed the render to another (auto) names the one that made the image.
+    RenderStateInfo made_by = info;
+    if (!result.integrator.empty()) made_by.integrator = result.integrator;
+    Image final_image = annotated_image(*result.film, made_by, result.seconds, result.interrupted);
+    if (!result.integrator_choice.empty()) final_image.metadata["freezeray:integrator_choice"] = result.integrator_choice;
+    write_image(out, final_image, {options.exposure});
     if (!result.extra_images.empty()) {
         // The integrator's own option chose the folder and checked it before the render.
         std::error_code error;
@@ -188,7 +193,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     }
     for (const auto& [name, image] : result.extra_images)
         write_image((std::filesystem::path(result.extra_images_folder) / name).string(), image, {options.exposure});
-    if (result.interrupted || options.checkpoint_seconds > 0.0) write_render_state(state_path_for(out), info, *result.film);
+    if (result.interrupted || options.checkpoint_seconds > 0.0) write_render_state(state_path_for(out), made_by, *result.film);
     for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
     if (!options.quiet)
         for (const std::string& n : result.notes) std::cerr << n << "\n";
@@ -197,20 +202,26 @@ int run_render(const RenderOptions& options, const Registry& registry) {
                   << " samples were NaN, infinite or negative and were counted as zero; this is a bug in the "
                      "integrator or a material, please report it with the scene\n";
     if (result.interrupted) {
+        const std::string& made_with = made_by.integrator;
         if (integrator->resumable())
             std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp in every pixel) and "
                       << state_path_for(out) << "; continue with the same command and --resume " << state_path_for(out)
                       << "\n";
+        else if (!result.integrator.empty())  // auto: what it chose goes on, not auto again
+            std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp, by " << made_with
+                      << ") and " << state_path_for(out) << "; continue with --integrator " << made_with
+                      << " and --resume " << state_path_for(out) << ", or, if " << made_with
+                      << " cannot resume, with --sample-offset " << result.samples_per_pixel << " and `merge`\n";
         else
             std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp) and "
-                      << state_path_for(out) << "; " << integrator_name
+                      << state_path_for(out) << "; " << made_with
                       << " cannot be resumed: render the rest with --sample-offset " << result.samples_per_pixel
                       << " and `merge` the two\n";
         std::cout << out << "\n";
         return 128 + static_cast<int>(received_signal);
     }
     if (!options.quiet) {
-        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, estimated relMSE %.4g\n", integrator_name.c_str(),
+        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, estimated relMSE %.4g\n", made_by.integrator.c_str(),
                      result.image.width(), result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),
                      format_duration(result.seconds).c_str(), result.estimated_relative_mse);
     }

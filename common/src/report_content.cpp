@@ -323,12 +323,10 @@ std::vector<std::string> integrator_notes(const Comparison& comparison) {
     // run_comparison)? Without a reference this is the one check that sees what a run has not
     // found yet.
     const std::size_t n = comparison.runs.size();
-    std::vector<std::vector<int>> verdict(n, std::vector<int>(n, 0));  // 1 agree, -1 disagree, 0 unknown
     for (const RunAgreement& pair : comparison.agreements) {
         if (pair.first >= n || pair.second >= n) continue;
         const IntegratorRun &a = comparison.runs[pair.first], &b = comparison.runs[pair.second];
         const Agreement& agree = pair.agreement;
-        verdict[pair.first][pair.second] = verdict[pair.second][pair.first] = agree.disagree() ? -1 : 1;
         char text[320];
         std::snprintf(text, sizeof text,
                       "their relMSE against each other is %.3g times the sum of their own estimates (about 1 ± %.2g "
@@ -350,18 +348,9 @@ std::vector<std::string> integrator_notes(const Comparison& comparison) {
         lines.push_back(line);
     }
     // Which one has not converged: a run at odds with every other, when those agree among themselves.
-    for (std::size_t i = 0; n >= 3 && i < n; ++i) {
-        bool odd_one_out = true;
-        for (std::size_t j = 0; j < n && odd_one_out; ++j) {
-            if (j == i) continue;
-            if (verdict[i][j] != -1) odd_one_out = false;
-            for (std::size_t k = j + 1; k < n && odd_one_out; ++k)
-                if (k != i && verdict[j][k] != 1) odd_one_out = false;
-        }
-        if (odd_one_out)
-            lines.push_back(comparison.runs[i].integrator + " disagrees with every other run, and they agree among "
-                                                            "themselves: it is the one that has not converged");
-    }
+    if (const std::optional<std::size_t> odd = odd_one_out(comparison.agreements, n))
+        lines.push_back(comparison.runs[*odd].integrator + " disagrees with every other run, far more than they disagree "
+                                                           "among themselves: it is the one that has not converged");
     return lines;
 }
 

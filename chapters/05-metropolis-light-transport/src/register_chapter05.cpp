@@ -2,6 +2,7 @@
 #include "freezeray/ch05/register_chapter05.hpp"
 
 #include "freezeray/ch05/metropolis_light_transport.hpp"
+#include "freezeray/auto_integrator.hpp"
 
 namespace freezeray {
 
@@ -34,6 +35,8 @@ void register_chapter05(Registry& registry) {
                                 return std::make_unique<ch05::MetropolisLightTransport>(
                                     ch05::read_mlt_settings(options, settings.max_depth, true));
                             });
+    // With every candidate registered, the one chosen by measurement (common/src/auto_integrator.cpp).
+    register_auto_integrator(registry, 5);
 }
 
 }  // namespace freezeray

@@ -199,6 +199,15 @@ std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& che
 
 // Every pair of runs (in index order) whose images have variances to compare with.
 std::vector<RunAgreement> pairwise_agreements(const std::vector<IntegratorRun>& runs);
+std::vector<RunAgreement> pairwise_agreements(const std::vector<const RenderResult*>& results);
+
+// Which run has not converged: the one that disagrees with every other, each time by at least
+// OddOneOutRatio times as much (D - 1) as any two of the others disagree among themselves (zero
+// when they agree), so at least three runs. A run that has missed some light disagrees with all
+// who found it; runs that found it disagree among themselves only by their estimates' own
+// shortfalls, which at a few samples per pixel are not zero. None when no run stands out.
+inline constexpr double OddOneOutRatio = 2.0;
+std::optional<std::size_t> odd_one_out(const std::vector<RunAgreement>& agreements, std::size_t runs);
 
 // The `count` square regions of side `size` where the renders' mean relative error against
 // the reference is highest, not overlapping.

@@ -64,6 +64,10 @@ struct RenderResult {
     // a scene whose light no path reaches, a Markov chain's acceptance rate).
     std::vector<std::string> warnings;
     std::vector<std::string> notes;
+    // An integrator that hands the render to another (`auto`) names the one that made the image,
+    // and why it was chosen; both empty otherwise.
+    std::string integrator;
+    std::string integrator_choice;
 };
 
 class Integrator {

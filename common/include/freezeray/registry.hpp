@@ -105,6 +105,9 @@ public:
     std::unique_ptr<Light> make_area_light(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission) const;
 
     bool has(CapabilityKind kind, const std::string& name) const;
+    // The factory registered under `name` (for an integrator made of others, such as `auto`);
+    // null when there is none.
+    IntegratorFactory integrator_factory(const std::string& name) const;
 
     // The course's catalogue (every capability of every chapter, including chapters this renderer
     // was built without), for "introduced in chapter N" messages; chapter 01 sets it. The
