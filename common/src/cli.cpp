@@ -122,6 +122,11 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--accel", render.accelerator,
                                "ray-intersection accelerator, one of: " + accelerators + " (default: the scene's, else " +
                                    registry.default_accelerator() + ")");
+    std::string samplers;
+    for (const auto& e : registry.list(CapabilityKind::Sampler)) samplers += (samplers.empty() ? "" : ", ") + e.name;
+    render_command->add_option("--sampler", render.sampler,
+                               "where the per-pixel integrators' numbers come from, one of: " + samplers +
+                                   " (default: the scene's, else " + registry.default_sampler() + ")");
     render_command->add_option("--threads", render.threads, "threads (default: every core)");
     render_command->add_option("--seed", render.seed, "random seed (default: the scene's)");
     render_command->add_option("--max-depth", render.max_depth, "maximum path length in segments");
@@ -173,6 +178,9 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
         ->add_option("--target-error", reference_target_error,
                      "with --make-reference: stop when the reference's estimated relMSE falls below this (--time, --spp cap it)")
         ->check(CLI::PositiveNumber);
+    compare_command->add_option("--sampler", compare.sampler,
+                                "the runs' sampler, one of: " + samplers + " (a run may name its own: pt-mis@sobol; default: the scene's, else " +
+                                    registry.default_sampler() + ")");
     compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
     compare_command->add_option("--seed", compare.seed,
                                 "random seed of the runs (default 0); a reference made with --make-reference gets another");

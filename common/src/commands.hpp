@@ -3,7 +3,9 @@
 
 #include "freezeray/registry.hpp"
 
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace freezeray {
@@ -17,6 +19,7 @@ struct RenderOptions {
     double time_seconds = 0.0;
     double target_error = 0.0;
     std::string accelerator;  // empty: the scene's, else the renderer's default
+    std::string sampler;      // empty: the scene's, else the renderer's default
     int threads = 0;
     long long seed = -1;
     long long sample_offset = 0;
@@ -49,6 +52,22 @@ int run_make_reference(const CompareRequest& request, double target_error, const
 
 class Scene;
 class Integrator;
+
+// The sampler of a render: `requested` (the command line's, given at `where`), else the scene's,
+// else the renderer's default. A sampler that was named but that the integrator does not draw
+// from is refused (InputError); the default is then replaced by independent, which is what such
+// an integrator's own streams are.
+struct SamplerChoice {
+    std::string name;
+    std::shared_ptr<const Sampler> sampler;
+};
+// A comparison's run, "pt-mis" or "pt-mis@sobol": the integrator and the sampler (empty when
+// the run names none).
+std::pair<std::string, std::string> split_run_name(const std::string& run);
+
+SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
+                             const Integrator& integrator, const std::string& integrator_name, const Registry& registry);
+
 // A warning for an integrator that cannot find the scene's point, spot and directional lights
 // (no ray can hit them), or an empty string.
 std::string unreachable_lights_warning(const Scene& scene, const Integrator& integrator, const std::string& name);

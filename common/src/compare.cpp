@@ -111,9 +111,14 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     settings.seed = request.seed;
     settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
     std::vector<std::unique_ptr<Integrator>> integrators;
+    std::vector<SamplerChoice> samplers;
     const auto options = integrator_options(scene, OptionValues{}, registry);  // the scene's "render" block
-    for (const std::string& name : request.integrators) {
+    for (const std::string& run_name : request.integrators) {
+        const auto [name, sampler] = split_run_name(run_name);
         integrators.push_back(registry.make_integrator(name, settings, "--integrators", &options->parameters()));
+        samplers.push_back(choose_sampler(!sampler.empty() ? sampler : request.sampler,
+                                          !sampler.empty() ? "--integrators" : "--sampler", scene, *integrators.back(), name,
+                                          registry));
         const std::string warning = unreachable_lights_warning(scene, *integrators.back(), name);
         if (!warning.empty() && !request.quiet) std::cerr << "warning: " << warning << "\n";
     }
@@ -156,6 +161,7 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
         IntegratorRun run;
         run.integrator = request.integrators[i];
         RenderSettings run_settings = settings;
+        run_settings.sampler = samplers[i].sampler;
         // At every pass boundary (1, 2, 4, ... spp) record the error so far, and that of the
         // pass's own samples (the film less the previous checkpoint's); this time is not counted
         // as render time.
@@ -197,6 +203,11 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
             run.ssim = ssim(run.result.image, *comparison.reference);
             run.mape = mape(run.result.image, *comparison.reference);
         } else {
+            if (samplers[i].name != "independent")
+                run.result.warnings.push_back("its error is estimated from the per-pixel variance, which assumes independent "
+                                              "samples; the " + samplers[i].name +
+                                              " sampler's are not, and its true error is usually lower: compare against a "
+                                              "--reference to see it");
             run.relative_mse = run.result.estimated_relative_mse;
             run.error_is_estimated = true;
         }

@@ -62,6 +62,13 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
                                          std::to_string(film.height()) + " but this one is " + std::to_string(width) + "x" +
                                          std::to_string(height));
     std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
+    const IndependentSampler independent;
+    const Sampler& prototype = settings.sampler ? *settings.sampler : independent;
+    std::vector<std::unique_ptr<Sampler>> samplers;
+    for (int t = 0; t < threads; ++t) {
+        samplers.push_back(prototype.clone());
+        samplers.back()->set_seed(settings.seed);
+    }
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     progress.start("render", by_time ? 0 : sample_cap * width * height, settings.time_seconds);
@@ -75,16 +82,17 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
         parallel_for_tiles(width, height, TileSize, threads, [&](const Tile& tile, int thread) {
             if (stop_requested(settings)) return;
             ScratchArena& arena = arenas[static_cast<std::size_t>(thread)];
+            Sampler& sampler = *samplers[static_cast<std::size_t>(thread)];
             for (int y = tile.y0; y < tile.y1; ++y) {
                 for (int x = tile.x0; x < tile.x1; ++x) {
                     const auto pixel_index = static_cast<std::uint32_t>(y * width + x);
                     // Each pixel goes on from its own count (they differ only after an interrupted pass).
                     for (std::uint64_t s = film.sample_count(x, y); s < target; ++s) {
-                        // Every random number of this sample comes from its own stream.
-                        PCG32 random = make_pixel_stream(settings.seed, pixel_index, settings.first_sample + s);
-                        const Vec2 film_position(x + random.next_float(), y + random.next_float());
+                        // Every number of this sample depends on (seed, pixel, sample index, dimension) only.
+                        sampler.start_pixel_sample(x, y, pixel_index, settings.first_sample + s);
+                        const Vec2 film_position = Vec2(x, y) + sampler.pixel_2d();
                         arena.reset();
-                        film.add_sample(x, y, li(camera.generate_ray(film_position), random, arena));
+                        film.add_sample(x, y, li(camera.generate_ray(film_position), sampler, arena));
                     }
                 }
             }
@@ -121,8 +129,8 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
 // END BOOK
 
 RenderResult PixelIntegrator::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
-    return render_pixels(scene, settings, progress, [&](const Ray& ray, PCG32& random, ScratchArena& arena) {
-        return li(ray, scene, random, arena);
+    return render_pixels(scene, settings, progress, [&](const Ray& ray, Sampler& sampler, ScratchArena& arena) {
+        return li(ray, scene, sampler, arena);
     });
 }
 

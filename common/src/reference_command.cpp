@@ -45,7 +45,16 @@ int run_make_reference(const CompareRequest& request, double target_error, const
 
     RenderOptions render;
     render.scene = request.scene;
-    render.integrator = request.integrators.front();
+    // A reference's samples must be independent: compare checks its estimated relMSE (from the
+    // per-pixel variance, which assumes them) and subtracts it from the runs' errors.
+    const auto [integrator, sampler] = split_run_name(request.integrators.front());
+    const std::string named_sampler = !sampler.empty() ? sampler : request.sampler;
+    if (!named_sampler.empty() && named_sampler != "independent")
+        throw InputError(!sampler.empty() ? "--integrators" : "--sampler",
+                         "a reference is rendered with independent samples: its estimated relMSE, which compare checks "
+                         "and subtracts from the runs' errors, assumes them (the " + named_sampler + " sampler's are not)");
+    render.integrator = integrator;
+    render.sampler = "independent";
     render.time_seconds = request.time_seconds;
     render.spp = static_cast<long long>(request.samples_per_pixel);
     render.spp_given = request.samples_per_pixel > 0;

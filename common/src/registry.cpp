@@ -16,6 +16,7 @@ const char* capability_kind_name(CapabilityKind kind) {
         case CapabilityKind::Accelerator: return "accelerator";
         case CapabilityKind::Light: return "light";
         case CapabilityKind::TextureLayout: return "texture layout";
+        case CapabilityKind::Sampler: return "sampler";
     }
     return "capability";
 }
@@ -54,6 +55,8 @@ std::string nearest_name(const std::string& name, const std::vector<std::string>
 Registry::Registry(std::string program, int chapter) : program_(std::move(program)), chapter_(chapter) {
     add_accelerator("bruteforce", 1, "every triangle of every mesh whose bounding box the ray meets",
                     [](const Parameters&) { return std::make_unique<BruteForceAccelerator>(); });
+    add_sampler("independent", 1, "independent uniform numbers, one PCG32 stream per pixel sample",
+                [](const Parameters&) { return std::make_unique<IndependentSampler>(); });
 }
 
 namespace {
@@ -92,6 +95,10 @@ void Registry::add_texture_layout(const std::string& name, int chapter, const st
     if (default_texture_layout_.empty()) default_texture_layout_ = name;
 }
 
+void Registry::add_sampler(const std::string& name, int chapter, const std::string& summary, SamplerFactory f) {
+    add_entry(samplers_, name, chapter, summary, std::move(f));
+}
+
 void Registry::add_option(OptionDeclaration option) {
     for (const OptionDeclaration& o : options_)
         if (o.flag == option.flag || (o.key == option.key && o.target == option.target))
@@ -108,6 +115,11 @@ void Registry::set_default_texture_layout(const std::string& name) {
     default_texture_layout_ = name;
 }
 
+void Registry::set_default_sampler(const std::string& name) {
+    if (!samplers_.count(name)) throw std::logic_error("default sampler '" + name + "' is not registered");
+    default_sampler_ = name;
+}
+
 bool Registry::has(CapabilityKind kind, const std::string& name) const {
     switch (kind) {
         case CapabilityKind::Integrator: return integrators_.count(name) > 0;
@@ -115,6 +127,7 @@ bool Registry::has(CapabilityKind kind, const std::string& name) const {
         case CapabilityKind::Accelerator: return accelerators_.count(name) > 0;
         case CapabilityKind::Light: return lights_.count(name) > 0 || (name == "area" && area_light_.has_value());
         case CapabilityKind::TextureLayout: return texture_layouts_.count(name) > 0;
+        case CapabilityKind::Sampler: return samplers_.count(name) > 0;
     }
     return false;  // not reached: every kind is handled above
 }
@@ -132,6 +145,7 @@ std::vector<Registry::Entry> Registry::list(CapabilityKind kind) const {
     if (kind == CapabilityKind::Material) collect(materials_);
     if (kind == CapabilityKind::Accelerator) collect(accelerators_);
     if (kind == CapabilityKind::TextureLayout) collect(texture_layouts_);
+    if (kind == CapabilityKind::Sampler) collect(samplers_);
     if (kind == CapabilityKind::Light) {
         collect(lights_);
         if (area_light_) entries.push_back(area_light_->first);
@@ -219,6 +233,13 @@ std::unique_ptr<Light> Registry::make_light(const std::string& type, const Param
     const auto it = lights_.find(type);
     if (it == lights_.end()) unknown(CapabilityKind::Light, type, parameters.where("type"));
     return it->second.second(parameters);
+}
+
+std::unique_ptr<Sampler> Registry::make_sampler(const std::string& name, const std::string& where,
+                                                const Parameters* options) const {
+    const auto it = samplers_.find(name);
+    if (it == samplers_.end()) unknown(CapabilityKind::Sampler, name, where);
+    return it->second.second(options != nullptr ? *options : no_parameters());
 }
 
 std::unique_ptr<Light> Registry::make_area_light(const TriangleMesh& mesh, std::uint32_t triangle,

@@ -25,6 +25,29 @@ std::string unreachable_lights_warning(const Scene& scene, const Integrator& int
                   "and stay black (pt-nee and pt-mis sample them)";
 }
 
+std::pair<std::string, std::string> split_run_name(const std::string& run) {
+    const std::size_t at = run.find('@');
+    if (at == std::string::npos) return {run, ""};
+    if (at == 0 || at + 1 == run.size())
+        throw InputError("--integrators", "'" + run + "': write INTEGRATOR or INTEGRATOR@SAMPLER (pt-mis@sobol)");
+    return {run.substr(0, at), run.substr(at + 1)};
+}
+
+SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
+                             const Integrator& integrator, const std::string& integrator_name, const Registry& registry) {
+    const bool named = !requested.empty() || !scene.defaults.sampler.empty();
+    std::string name = !requested.empty() ? requested : named ? scene.defaults.sampler : registry.default_sampler();
+    const std::string at = !requested.empty() ? where : scene.file + ": /render/sampler";
+    registry.require(CapabilityKind::Sampler, name, at);
+    if (!integrator.draws_from_sampler() && name != "independent") {
+        if (named)
+            throw InputError(at, integrator_name + " draws its numbers from its own streams (light paths, Markov chains), "
+                                 "not from a sampler: only the per-pixel integrators take --sampler " + name);
+        name = "independent";
+    }
+    return {name, registry.make_sampler(name, at)};
+}
+
 namespace {
 
 // The integrator for a render that names none: the registered one the scene's effects call for,
@@ -89,6 +112,7 @@ std::string state_path_for(const std::string& out) { return out + ".state"; }
 Image annotated_image(const Film& film, const RenderStateInfo& info, double seconds, bool interrupted) {
     Image image = film.mean();
     image.metadata["freezeray:integrator"] = info.integrator;
+    image.metadata["freezeray:sampler"] = info.sampler;
     image.metadata["freezeray:scene"] = info.scene;
     image.metadata["freezeray:samples_per_pixel"] = std::to_string(film.minimum_sample_count());
     image.metadata["freezeray:seed"] = std::to_string(info.seed);
@@ -138,9 +162,13 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     if (const std::string w = unreachable_lights_warning(scene, *integrator, integrator_name); !w.empty())
         std::cerr << "warning: " << w << "\n";
 
+    const SamplerChoice sampler = choose_sampler(options.sampler, "--sampler", scene, *integrator, integrator_name, registry);
+    settings.sampler = sampler.sampler;
+
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after
-    const RenderStateInfo info{options.scene, integrator_name, settings.seed, settings.first_sample, settings.max_depth,
+    const RenderStateInfo info{options.scene,     integrator_name,       sampler.name,
+                               settings.seed,     settings.first_sample, settings.max_depth,
                                scene.camera->width(), scene.camera->height()};
     if (!options.resume.empty()) {
         if (!integrator->resumable())
@@ -221,9 +249,11 @@ int run_render(const RenderOptions& options, const Registry& registry) {
         return 128 + static_cast<int>(received_signal);
     }
     if (!options.quiet) {
-        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, estimated relMSE %.4g\n", made_by.integrator.c_str(),
+        // The estimate comes from the per-pixel variance, which assumes independent samples.
+        const std::string estimate_note = sampler.name == "independent" ? "" : " (as if independent: " + sampler.name + "'s is lower)";
+        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, estimated relMSE %.4g%s\n", made_by.integrator.c_str(),
                      result.image.width(), result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),
-                     format_duration(result.seconds).c_str(), result.estimated_relative_mse);
+                     format_duration(result.seconds).c_str(), result.estimated_relative_mse, estimate_note.c_str());
     }
     std::cout << out << "\n";
     return 0;

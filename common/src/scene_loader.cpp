@@ -332,6 +332,8 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         scene.defaults.max_depth = r.get_int("max_depth", 0);
         if (scene.defaults.max_depth < 0) throw InputError(r.where("max_depth"), "must not be negative");
         scene.defaults.seed = static_cast<std::uint64_t>(r.get_int("seed", 0));
+        scene.defaults.sampler = r.get_string("sampler", "");
+        if (!scene.defaults.sampler.empty()) registry.require(CapabilityKind::Sampler, scene.defaults.sampler, r.where("sampler"));
         // The keys of the integrators' options go to the integrator's factory, which checks them.
         for (const OptionDeclaration& d : registry.options())
             if (d.target == OptionTarget::Integrator && r.has(d.key))

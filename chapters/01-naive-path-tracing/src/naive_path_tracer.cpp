@@ -11,8 +11,7 @@ namespace freezeray::ch01 {
 // The direction of the next bounce, uniform over the hemisphere on the side of wo, or over the
 // whole sphere when the material transmits light (so that glass is not black: the estimator
 // only needs eval, and the sphere covers both lobes). Returns the direction and its pdf.
-static std::pair<Vec3, float> sample_naive_direction(const Vec3& wo, std::uint32_t bsdf_flags, PCG32& random) {
-    const Vec2 u(random.next_float(), random.next_float());
+static std::pair<Vec3, float> sample_naive_direction(const Vec3& wo, std::uint32_t bsdf_flags, const Vec2& u) {
     if (has_flag(bsdf_flags, BSDF_Transmission)) return {sample_uniform_sphere(u), uniform_sphere_pdf()};
     Vec3 wi = sample_uniform_hemisphere(u);
     if (wo.z < 0.0f) wi.z = -wi.z;
@@ -21,7 +20,7 @@ static std::pair<Vec3, float> sample_naive_direction(const Vec3& wo, std::uint32
 // END BOOK
 
 // BOOK(naive-li)
-Spectrum NaivePathTracer::li(const Ray& camera_ray, const Scene& scene, PCG32& random, ScratchArena& arena) const {
+Spectrum NaivePathTracer::li(const Ray& camera_ray, const Scene& scene, Sampler& sampler, ScratchArena& arena) const {
     Spectrum radiance(0.0f);
     Spectrum throughput(1.0f);  // the product of f cos / pdf along the path so far
     Ray ray = camera_ray;
@@ -33,6 +32,7 @@ Spectrum NaivePathTracer::li(const Ray& camera_ray, const Scene& scene, PCG32& r
         }
         const Material& material = scene.material(*hit);
         const Vec3 wo_world = -ray.direction;
+        sampler.start_vertex(segments);  // this vertex's random numbers (chapter 09)
 
         // Light is only found when the path happens to hit an emitter.
         radiance += throughput * emitted_radiance(material, *hit, wo_world);
@@ -42,7 +42,7 @@ Spectrum NaivePathTracer::li(const Ray& camera_ray, const Scene& scene, PCG32& r
         const BSDF& bsdf = *material.bsdf(*hit, arena);
         const Frame frame(hit->shading_normal);
         const Vec3 wo = frame.to_local(wo_world);
-        const auto [wi, pdf] = sample_naive_direction(wo, bsdf.flags(), random);
+        const auto [wi, pdf] = sample_naive_direction(wo, bsdf.flags(), sampler.get_2d(VertexDimension::BsdfDirection));
         // EXERCISE(ch01/path-throughput): multiply the throughput by the Monte Carlo weight of this bounce, f(wo, wi) |cos theta_i| / pdf
         throughput *= bsdf.eval(wo, wi) * abs_cos_theta(wi) / pdf;
         // END EXERCISE

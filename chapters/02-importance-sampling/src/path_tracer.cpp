@@ -16,7 +16,7 @@ float russian_roulette_continue_probability(const Spectrum& throughput) {
 // END BOOK
 
 // BOOK(pt-is-li)
-Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& scene, PCG32& random,
+Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& scene, Sampler& sampler,
                                          ScratchArena& arena) const {
     Spectrum radiance(0.0f);
     Spectrum throughput(1.0f);
@@ -29,13 +29,15 @@ Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& sce
         }
         const Material& material = scene.material(*hit);
         const Vec3 wo_world = -ray.direction;
+        sampler.start_vertex(segments);  // this vertex's random numbers (chapter 09)
         radiance += throughput * emitted_radiance(material, *hit, wo_world);
         if (segments == max_depth_) break;
 
         const BSDF& bsdf = *material.bsdf(*hit, arena);
         const Frame frame = shading_frame(*hit, bsdf, wo_world);  // two-sided unless it transmits
-        const Vec2 u(random.next_float(), random.next_float());
-        const std::optional<BSDFSample> sample = bsdf.sample(frame.to_local(wo_world), u, random.next_float());
+        const Vec2 u = sampler.get_2d(VertexDimension::BsdfDirection);
+        const std::optional<BSDFSample> sample =
+            bsdf.sample(frame.to_local(wo_world), u, sampler.get_1d(VertexDimension::BsdfLobe));
         if (!sample || sample->pdf <= 0.0f) break;
         throughput *= sample->weight();
         if (is_black(throughput)) break;
@@ -44,7 +46,7 @@ Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& sce
         // expected value is unchanged (Arvo and Kirk, "Particle Transport and Image Synthesis", 1990).
         if (segments >= RussianRouletteStart) {
             const float q = russian_roulette_continue_probability(throughput);
-            if (random.next_float() >= q) break;
+            if (sampler.get_1d(VertexDimension::Roulette) >= q) break;
             throughput /= q;
         }
         ray = hit->spawn_ray(frame.to_world(sample->wi));

@@ -24,8 +24,8 @@ LightSamplingPathTracer::LightSamplingPathTracer(const LightSamplingSettings& se
 
 RenderResult LightSamplingPathTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
     const LightSampler lights(scene.lights, settings_.selection);
-    return render_pixels(scene, settings, progress, [&](const Ray& ray, PCG32& random, ScratchArena& arena) {
-        return li(ray, scene, lights, random, arena);
+    return render_pixels(scene, settings, progress, [&](const Ray& ray, Sampler& sampler, ScratchArena& arena) {
+        return li(ray, scene, lights, sampler, arena);
     });
 }
 
@@ -34,9 +34,9 @@ RenderResult LightSamplingPathTracer::render(const Scene& scene, const RenderSet
 // f Li |cos theta_i| / (P(light) p(wi)), weighted against BSDF sampling when combining by MIS.
 static Spectrum sample_one_light(const Hit& hit, const Frame& frame, const Vec3& wo, const BSDF& bsdf,
                                  const Scene& scene, const LightSampler& lights, const LightSamplingSettings& settings,
-                                 PCG32& random) {
-    const float u_select = random.next_float();
-    const Vec2 u_light(random.next_float(), random.next_float());
+                                 Sampler& sampler) {
+    const float u_select = sampler.get_1d(VertexDimension::LightChoice);
+    const Vec2 u_light = sampler.get_2d(VertexDimension::LightPosition);
     const std::optional<LightSampler::Choice> choice = lights.sample(u_select);
     if (!choice) return Spectrum(0.0f);
     const std::optional<LightSample> sample = choice->light->sample_li(hit.position, u_light);
@@ -73,7 +73,7 @@ static float emission_weight(const PreviousBounce& previous, const Light* light,
 
 // BOOK(pt-mis-li)
 Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, const LightSampler& lights,
-                                     PCG32& random, ScratchArena& arena) const {
+                                     Sampler& sampler, ScratchArena& arena) const {
     Spectrum radiance(0.0f);
     Spectrum throughput(1.0f);
     Ray ray = camera_ray;
@@ -88,6 +88,7 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
         }
         const Material& material = scene.material(*hit);
         const Vec3 wo_world = -ray.direction;
+        sampler.start_vertex(segments);  // this vertex's random numbers (chapter 09)
         const Spectrum emitted = emitted_radiance(material, *hit, wo_world);
         if (!is_black(emitted))
             radiance += throughput * emitted *
@@ -100,11 +101,11 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
 
         // Next-event estimation: a light sample at every vertex with a non-delta lobe.
         if (bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy))
-            radiance += throughput * sample_one_light(*hit, frame, wo, bsdf, scene, lights, settings_, random);
+            radiance += throughput * sample_one_light(*hit, frame, wo, bsdf, scene, lights, settings_, sampler);
 
         // Continue the path by sampling the BSDF (chapter 02).
-        const Vec2 u(random.next_float(), random.next_float());
-        const std::optional<BSDFSample> sample = bsdf.sample(wo, u, random.next_float());
+        const Vec2 u = sampler.get_2d(VertexDimension::BsdfDirection);
+        const std::optional<BSDFSample> sample = bsdf.sample(wo, u, sampler.get_1d(VertexDimension::BsdfLobe));
         if (!sample || sample->pdf <= 0.0f) break;
         throughput *= sample->weight();
         if (is_black(throughput)) break;
@@ -112,7 +113,7 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
 
         if (segments >= ch02::RussianRouletteStart) {
             const float q = ch02::russian_roulette_continue_probability(throughput);
-            if (random.next_float() >= q) break;
+            if (sampler.get_1d(VertexDimension::Roulette) >= q) break;
             throughput /= q;
         }
         ray = hit->spawn_ray(frame.to_world(sample->wi));

@@ -42,7 +42,7 @@ RenderResult TraversalCostIntegrator::render(const Scene& scene, const RenderSet
         throw InputError("--integrator", "traversal-cost counts the KD-tree's work, but this scene's accelerator is '" +
                                              scene.accelerator_name + "' (use --accel kdtree)");
     // The count, in every channel: the film averages it over the pixel's camera rays.
-    RenderResult result = render_pixels(scene, settings, progress, [&](const Ray& ray, PCG32&, ScratchArena&) {
+    RenderResult result = render_pixels(scene, settings, progress, [&](const Ray& ray, Sampler&, ScratchArena&) {
         const TraversalCounts counts = tree->count_traversal(ray);
         const std::uint32_t n = quantity_ == TraversalQuantity::InteriorNodes ? counts.interior_nodes
                                 : quantity_ == TraversalQuantity::Leaves      ? counts.leaves

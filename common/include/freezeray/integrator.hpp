@@ -3,8 +3,8 @@
 
 #include "freezeray/film.hpp"
 #include "freezeray/image.hpp"
-#include "freezeray/random.hpp"
 #include "freezeray/ray.hpp"
+#include "freezeray/sampler.hpp"
 #include "freezeray/scratch_arena.hpp"
 
 #include <atomic>
@@ -44,6 +44,9 @@ struct RenderSettings {
     // > 0: passes are shortened so that none takes much longer than this (checkpoints are
     // written between passes).
     double max_pass_seconds = 0.0;
+    // Where the per-pixel integrators' numbers come from (chapter 09's `--sampler`); each thread
+    // renders with its own clone. Null: the independent sampler.
+    std::shared_ptr<const Sampler> sampler;
 };
 
 struct RenderResult {
@@ -82,11 +85,16 @@ public:
     // False when a saved render cannot be continued exactly (`--resume`): one whose film's
     // state is not a per-pixel sample count that a pass can go on from.
     virtual bool resumable() const { return true; }
+
+    // True when the integrator draws its numbers from RenderSettings::sampler (the per-pixel
+    // loop, render_pixels); the others (light paths, Markov chains) use their own streams, and
+    // `--sampler` other than independent is refused for them.
+    virtual bool draws_from_sampler() const { return false; }
 };
 
-// One sample of the radiance arriving along a camera ray. All randomness from `random`; scratch
-// allocations in `arena`, which is reset before every call.
-using RadianceEstimator = std::function<Spectrum(const Ray& ray, PCG32& random, ScratchArena& arena)>;
+// One sample of the radiance arriving along a camera ray. All randomness from `sampler`, which
+// has started the pixel sample; scratch allocations in `arena`, which is reset before every call.
+using RadianceEstimator = std::function<Spectrum(const Ray& ray, Sampler& sampler, ScratchArena& arena)>;
 
 // The image loop shared by every per-pixel integrator: passes of samples over all tiles until the
 // sample count, the time budget or the target error is reached; each sample from its own stream.
@@ -100,10 +108,11 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
 class PixelIntegrator : public Integrator {
 public:
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
+    bool draws_from_sampler() const override { return true; }
 
-    // One sample of the radiance arriving along `ray`. All randomness from `random`; scratch
-    // allocations in `arena`, which is reset before every call.
-    virtual Spectrum li(const Ray& ray, const Scene& scene, PCG32& random, ScratchArena& arena) const = 0;
+    // One sample of the radiance arriving along `ray`. All randomness from `sampler`, by
+    // dimension (sampler.hpp); scratch allocations in `arena`, which is reset before every call.
+    virtual Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, ScratchArena& arena) const = 0;
 };
 
 }  // namespace freezeray

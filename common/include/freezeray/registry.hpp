@@ -10,6 +10,7 @@
 #include "freezeray/mesh.hpp"
 #include "freezeray/options.hpp"
 #include "freezeray/parameters.hpp"
+#include "freezeray/sampler.hpp"
 #include "freezeray/texture_storage.hpp"
 
 #include <functional>
@@ -40,12 +41,14 @@ using AcceleratorFactory = std::function<std::unique_ptr<Accelerator>(const Para
 // Stores a decoded image in a texture layout.
 using TextureLayoutFactory = std::function<std::shared_ptr<const TextureStorage>(const Image& image)>;
 using LightFactory = std::function<std::unique_ptr<Light>(const Parameters&)>;
+// A sampler (chapter 09) with its settings: the scene's "render" block under the command line's.
+using SamplerFactory = std::function<std::unique_ptr<Sampler>(const Parameters& options)>;
 // An area light for one emissive triangle of a mesh (world space) with the given emitted radiance.
 using AreaLightFactory =
     std::function<std::unique_ptr<Light>(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission)>;
 
 // The kinds of things the registry names.
-enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout };
+enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout, Sampler };
 const char* capability_kind_name(CapabilityKind kind);
 
 // One line of a course's table of contents: the chapter that introduces a named capability.
@@ -58,7 +61,8 @@ struct CatalogueEntry {
 class Registry {
 public:
     // program: the executable's name ("ch01", "freezeray"); chapter: the last chapter it
-    // registers. The constructor registers what lives in common/: the bruteforce accelerator.
+    // registers. The constructor registers what lives in common/: the bruteforce accelerator and
+    // the independent sampler.
     Registry(std::string program, int chapter);
 
     const std::string& program() const { return program_; }
@@ -76,6 +80,7 @@ public:
     void add_area_light(int chapter, const std::string& summary, AreaLightFactory factory);
     void add_texture_layout(const std::string& name, int chapter, const std::string& summary,
                             TextureLayoutFactory factory);
+    void add_sampler(const std::string& name, int chapter, const std::string& summary, SamplerFactory factory);
     // A command-line option of a chapter's capability (options.hpp). Its flag must be new.
     void add_option(OptionDeclaration option);
 
@@ -84,6 +89,10 @@ public:
     // makes its KD-tree the default). The name must be registered.
     void set_default_accelerator(const std::string& name);
     void set_default_texture_layout(const std::string& name);
+    // The sampler when neither the scene nor the command line names one: independent, until
+    // chapter 09 says otherwise.
+    void set_default_sampler(const std::string& name);
+    const std::string& default_sampler() const { return default_sampler_; }
     const std::string& default_accelerator() const { return default_accelerator_; }
     const std::string& default_texture_layout() const { return default_texture_layout_; }
 
@@ -101,6 +110,8 @@ public:
     std::shared_ptr<const TextureStorage> make_texture_storage(const std::string& layout, const Image& image,
                                                                const std::string& where) const;
     std::unique_ptr<Light> make_light(const std::string& type, const Parameters& parameters) const;
+    std::unique_ptr<Sampler> make_sampler(const std::string& name, const std::string& where,
+                                          const Parameters* options = nullptr) const;
     // Null when no chapter registered area lights.
     std::unique_ptr<Light> make_area_light(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission) const;
 
@@ -140,9 +151,11 @@ private:
     std::map<std::string, std::pair<Entry, LightFactory>> lights_;
     std::optional<std::pair<Entry, AreaLightFactory>> area_light_;
     std::map<std::string, std::pair<Entry, TextureLayoutFactory>> texture_layouts_;
+    std::map<std::string, std::pair<Entry, SamplerFactory>> samplers_;
     std::vector<OptionDeclaration> options_;
     std::string default_accelerator_ = "bruteforce";
     std::string default_texture_layout_;
+    std::string default_sampler_ = "independent";
     const std::vector<CatalogueEntry>* catalogue_ = nullptr;
 };
 

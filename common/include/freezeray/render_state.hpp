@@ -13,6 +13,7 @@ namespace freezeray {
 struct RenderStateInfo {
     std::string scene;
     std::string integrator;
+    std::string sampler = "independent";  // chapter 09; states written before it have none: independent
     std::uint64_t seed = 0;
     std::uint64_t first_sample = 0;
     int max_depth = 0;
@@ -32,7 +33,7 @@ void write_render_state(const std::string& path, const RenderStateInfo& info, co
 RenderState read_render_state(const std::string& path);
 
 // Throws InputError("--resume", ...) unless `saved` describes the same render as `wanted`
-// (scene, integrator, seed, sample offset, depth and size).
+// (scene, integrator, sampler, seed, sample offset, depth and size).
 void check_resumable(const RenderStateInfo& saved, const RenderStateInfo& wanted);
 
 // Combines two films of the same image made from disjoint samples: per pixel, the means are

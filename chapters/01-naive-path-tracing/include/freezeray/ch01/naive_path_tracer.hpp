@@ -18,7 +18,7 @@ class NaivePathTracer final : public PixelIntegrator {
 public:
     explicit NaivePathTracer(int max_depth) : max_depth_(max_depth > 0 ? max_depth : DefaultMaxDepth) {}
 
-    Spectrum li(const Ray& ray, const Scene& scene, PCG32& random, ScratchArena& arena) const override;
+    Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, ScratchArena& arena) const override;
 
     int max_depth() const { return max_depth_; }
 

@@ -18,7 +18,7 @@ class ImportanceSampledPathTracer final : public PixelIntegrator {
 public:
     explicit ImportanceSampledPathTracer(int max_depth) : max_depth_(max_depth > 0 ? max_depth : DefaultMaxDepth) {}
 
-    Spectrum li(const Ray& ray, const Scene& scene, PCG32& random, ScratchArena& arena) const override;
+    Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, ScratchArena& arena) const override;
 
 private:
     int max_depth_;

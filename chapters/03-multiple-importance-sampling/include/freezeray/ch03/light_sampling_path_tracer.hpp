@@ -29,10 +29,11 @@ public:
     explicit LightSamplingPathTracer(const LightSamplingSettings& settings);
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
+    bool draws_from_sampler() const override { return true; }
     bool samples_lights() const override { return true; }
 
     // One sample of the radiance arriving along `ray`.
-    Spectrum li(const Ray& ray, const Scene& scene, const LightSampler& lights, PCG32& random, ScratchArena& arena) const;
+    Spectrum li(const Ray& ray, const Scene& scene, const LightSampler& lights, Sampler& sampler, ScratchArena& arena) const;
 
 private:
     LightSamplingSettings settings_;

@@ -1,0 +1,94 @@
+// Samplers: where a camera path's random numbers come from (book chapter 09). Every per-pixel
+// integrator draws its numbers from a Sampler, by dimension: the independent sampler (PCG32,
+// what chapters 01 to 08 use) ignores the dimension, a quasi-Monte Carlo sampler (chapter 09)
+// gives every dimension its own well-stratified sequence over a pixel's samples.
+#pragma once
+
+#include "freezeray/math.hpp"
+#include "freezeray/random.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace freezeray {
+
+// The fixed layout of one pixel sample's dimensions (book chapter 09, "the dimension layout").
+// Dimensions 0 and 1 place the sample in the pixel. Path vertex k (k = 1 where the camera ray
+// lands) owns the DimensionsPerVertex dimensions from CameraDimensions + DimensionsPerVertex (k - 1),
+// and draws each of its numbers at a fixed offset there, so that a vertex that skips its light
+// sample (a mirror) does not shift the dimensions of the vertices after it.
+enum class VertexDimension : std::uint32_t {
+    LightChoice = 0,    // which light to sample (1D)
+    LightPosition = 1,  // where on it (2D: offsets 1 and 2)
+    BsdfDirection = 3,  // the BSDF's direction (2D: offsets 3 and 4)
+    BsdfLobe = 5,       // which lobe of a BSDF with several (1D)
+    Roulette = 6,       // Russian roulette (1D); offset 7 is spare
+};
+constexpr std::uint32_t CameraDimensions = 2;
+constexpr std::uint32_t DimensionsPerVertex = 8;
+
+class Sampler {
+public:
+    virtual ~Sampler() = default;
+
+    // A sampler for another thread: the same sequence, its own position in it.
+    virtual std::unique_ptr<Sampler> clone() const = 0;
+
+    // The render's seed: samplers with different seeds give independent images.
+    void set_seed(std::uint64_t seed) { seed_ = seed; }
+    std::uint64_t seed() const { return seed_; }
+
+    // Begins sample `sample_index` of pixel (x, y) (`pixel_index` = y * width + x). What is drawn
+    // until the next call depends on the seed, the pixel, the sample index and the dimension
+    // only, never on the thread or the order in which pixels are rendered.
+    void start_pixel_sample(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) {
+        vertex_first_dimension_ = CameraDimensions;
+        begin(x, y, pixel_index, sample_index);
+    }
+
+    // The sample's position in its pixel (dimensions 0 and 1).
+    Vec2 pixel_2d() { return sample_2d(0); }
+
+    // Moves to the dimensions of path vertex `vertex` (1 = the camera ray's hit).
+    void start_vertex(int vertex) {
+        vertex_first_dimension_ = CameraDimensions + DimensionsPerVertex * static_cast<std::uint32_t>(vertex - 1);
+    }
+    float get_1d(VertexDimension d) { return sample_1d(vertex_first_dimension_ + static_cast<std::uint32_t>(d)); }
+    Vec2 get_2d(VertexDimension d) { return sample_2d(vertex_first_dimension_ + static_cast<std::uint32_t>(d)); }
+
+protected:
+    virtual void begin(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) = 0;
+    // The number, or pair, at `dimension` (a pair takes `dimension` and `dimension + 1`).
+    virtual float sample_1d(std::uint32_t dimension) = 0;
+    virtual Vec2 sample_2d(std::uint32_t dimension) = 0;
+
+private:
+    std::uint64_t seed_ = 0;
+    std::uint32_t vertex_first_dimension_ = CameraDimensions;
+};
+
+// Independent uniform numbers: one PCG32 stream per pixel sample (random.hpp), drawn in the
+// order the integrator asks for them; the dimension is ignored. The images of chapters 01 to 08.
+class IndependentSampler final : public Sampler {
+public:
+    std::unique_ptr<Sampler> clone() const override { return std::make_unique<IndependentSampler>(*this); }
+
+protected:
+    void begin(int, int, std::uint32_t pixel_index, std::uint64_t sample_index) override {
+        random_ = make_pixel_stream(seed(), pixel_index, sample_index);
+    }
+    float sample_1d(std::uint32_t) override { return random_.next_float(); }
+    // The second coordinate is drawn first: the order in which g++ evaluated the arguments of
+    // Vec2(random.next_float(), random.next_float()) in the chapters' code before there were
+    // samplers, kept so that their images stay bit for bit what they were.
+    Vec2 sample_2d(std::uint32_t) override {
+        const float second = random_.next_float();
+        const float first = random_.next_float();
+        return Vec2(first, second);
+    }
+
+private:
+    PCG32 random_;
+};
+
+}  // namespace freezeray
