@@ -39,6 +39,9 @@ const std::vector<CatalogueEntry>& course_catalogue() {
         {CapabilityKind::Integrator, "traversal-cost", 6},
         {CapabilityKind::Accelerator, "kdtree-simd", 7},
         {CapabilityKind::TextureLayout, "tiled", 8},
+        {CapabilityKind::Sampler, "independent", 1},
+        {CapabilityKind::Sampler, "stratified", 9},
+        {CapabilityKind::Sampler, "sobol", 9},
     };
     return catalogue;
 }

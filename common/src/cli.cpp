@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <set>
 #include <filesystem>
 #include <iostream>
 
@@ -99,12 +100,36 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
 
 }  // namespace
 
+// The chapters whose capabilities this renderer holds, as "01 to 06 and 09": a chapter not
+// written yet leaves a gap.
+std::string chapters_contained(const Registry& registry) {
+    std::set<int> chapters;
+    for (CapabilityKind kind : {CapabilityKind::Integrator, CapabilityKind::Material, CapabilityKind::Accelerator,
+                                CapabilityKind::Light, CapabilityKind::TextureLayout, CapabilityKind::Sampler})
+        for (const Registry::Entry& e : registry.list(kind))
+            if (e.chapter >= 1 && e.chapter <= registry.chapter()) chapters.insert(e.chapter);
+    std::vector<std::string> runs;  // "01 to 06", "09"
+    for (auto it = chapters.begin(); it != chapters.end();) {
+        const int first = *it;
+        int last = first;
+        while (++it != chapters.end() && *it == last + 1) last = *it;
+        if (last == first) runs.push_back(two_digit(first));
+        else if (last == first + 1) runs.push_back(two_digit(first) + " and " + two_digit(last));
+        else runs.push_back(two_digit(first) + " to " + two_digit(last));
+    }
+    std::string text;
+    for (std::size_t i = 0; i < runs.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == runs.size() ? " and " : ", ") + runs[i];
+    return text;
+}
+
 int run_command_line(int argc, char** argv, const Registry& registry) {
-    CLI::App app{"FreezeRay " + registry.program() + ": the renderer of chapters 01 to " + two_digit(registry.chapter()) +
-                 " of the course"};
+    const std::string chapters = chapters_contained(registry);
+    CLI::App app{"FreezeRay " + registry.program() + ": the renderer of chapter" +
+                 (chapters.size() > 2 ? "s " : " ") + chapters + " of the course"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "FreezeRay " + registry.program() + " " + FREEZERAY_VERSION + " (chapters 01 to " +
-                                          two_digit(registry.chapter()) + ")");
+    app.set_version_flag("--version", "FreezeRay " + registry.program() + " " + FREEZERAY_VERSION + " (chapter" +
+                                          (chapters.size() > 2 ? "s " : " ") + chapters + ")");
 
     RenderOptions render;
     std::string integrators;

@@ -171,6 +171,10 @@ void Registry::unknown(CapabilityKind kind, const std::string& name, const std::
                                     (chapter < 10 ? "0" : "") + std::to_string(chapter) + "; this renderer (" +
                                     program_ + ") goes up to chapter " + (chapter_ < 10 ? "0" : "") +
                                     std::to_string(chapter_) + " (the complete renderer is `freezeray`)");
+    if (chapter > 0)  // a chapter up to this renderer's last that it does not contain (not written yet)
+        throw InputError(where, kind_name + " '" + name + "' is introduced in chapter " + (chapter < 10 ? "0" : "") +
+                                    std::to_string(chapter) + ", which this renderer (" + program_ +
+                                    ") does not contain: that chapter is not written yet");
     std::vector<std::string> names;
     for (const Entry& e : list(kind)) names.push_back(e.name);
     std::string message = "unknown " + kind_name + " '" + name + "'";

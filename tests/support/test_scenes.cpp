@@ -62,7 +62,10 @@ RenderResult render(const TestRender& request) {
     if (request.mlt_bootstrap > 0) given.values["mlt_bootstrap"] = request.mlt_bootstrap;
     if (request.mlt_chains > 0) given.values["mlt_chains"] = request.mlt_chains;
     const auto chapter_options = integrator_options(scene, given, full_registry());
-    const auto integrator = full_registry().make_integrator(request.integrator, settings, "test", &chapter_options->parameters());
+    const std::size_t at = request.integrator.find('@');
+    const std::string integrator_name = request.integrator.substr(0, at);
+    if (at != std::string::npos) settings.sampler = full_registry().make_sampler(request.integrator.substr(at + 1), "test");
+    const auto integrator = full_registry().make_integrator(integrator_name, settings, "test", &chapter_options->parameters());
     Progress quiet(true);
     return integrator->render(scene, settings, quiet);
 }

@@ -28,6 +28,9 @@ std::string scene_load_error(const std::string& path, const Registry& registry =
 
 struct TestRender {
     std::string scene;             // path of the scene JSON
+    // An integrator, or "integrator@sampler" as compare's runs name it (pt-mis@sobol). Without a
+    // sampler, independent samples, whatever the course's default: the tests' per-pixel variances
+    // and error estimates assume them.
     std::string integrator = "pt-naive";
     std::uint64_t samples_per_pixel = 16;
     std::uint64_t seed = 1;

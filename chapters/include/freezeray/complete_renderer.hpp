@@ -11,7 +11,10 @@ namespace freezeray {
 // The last chapter of the course that this build contains.
 int last_chapter();
 
-// A registry for `program` with chapters 01 to last_chapter() registered.
+// Whether chapter `number` is written and registered (07 and 08 are not yet, 09 is).
+bool chapter_is_written(int number);
+
+// A registry for `program` with every written chapter up to last_chapter() registered.
 Registry make_complete_registry(const std::string& program);
 
 }  // namespace freezeray

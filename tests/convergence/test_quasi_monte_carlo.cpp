@@ -1,0 +1,56 @@
+// Chapter 09's samplers inside the renderer: pt-mis drawing from `sobol` or `stratified` converges
+// to the same image as pt-mis with independent samples, and stays deterministic. A QMC render's
+// per-pixel variance does not measure its error (its samples are not independent), so agreement
+// is tested over 16 runs with independent scrambles (seeds), whose spread does. Three tests at
+// convergence_test_alpha (tests/STATISTICS.md, label convergence).
+#include "independent_runs.hpp"
+#include "test_scenes.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+using namespace freezeray;
+
+TEST_CASE("pt-mis with the sobol sampler agrees with independent pt-mis on the Cornell box", "[convergence][ch09]") {
+    // 16 runs of 64 spp, each its own scramble, against one independent pt-mis render of 1024 spp;
+    // block means at 32 x 32 (the whole image) and 8 x 8: 2 tests.
+    testing::SplattingAgreement request;
+    request.integrator = "pt-mis@sobol";
+    request.scene = "cornell-box/scene.json";
+    request.first_seed = 901;
+    request.block_sizes = {32, 8};
+    testing::require_agrees_with_pt_mis(request);
+}
+
+TEST_CASE("pt-mis with the stratified sampler agrees with independent pt-mis on the Cornell box", "[convergence][ch09]") {
+    // As above, 8 x 8 blocks: 1 test.
+    testing::SplattingAgreement request;
+    request.integrator = "pt-mis@stratified";
+    request.scene = "cornell-box/scene.json";
+    request.first_seed = 931;
+    request.block_sizes = {8};
+    testing::require_agrees_with_pt_mis(request);
+}
+
+TEST_CASE("a sobol image is bit-identical with 1 and 2 threads", "[convergence][determinism][ch09]") {
+    for (const char* integrator : {"pt-mis@sobol", "pt-naive@stratified"}) {
+        testing::TestRender request;
+        request.scene = testing::scene_path("cornell-box/scene.json");
+        request.integrator = integrator;
+        request.width = request.height = 40;  // not a multiple of the tile size
+        request.samples_per_pixel = 6;
+        request.seed = 99;
+        request.threads = 1;
+        const RenderResult one = testing::render(request);
+        request.threads = 2;
+        const RenderResult two = testing::render(request);
+        INFO(integrator);
+        REQUIRE(one.image.pixel_count() == two.image.pixel_count());
+        CHECK(std::memcmp(one.image.pixels().data(), two.image.pixels().data(), one.image.pixel_count() * sizeof(Spectrum)) == 0);
+        // A sampler that ignored its seed would make independent runs impossible.
+        request.seed = 100;
+        const RenderResult other = testing::render(request);
+        CHECK(std::memcmp(one.image.pixels().data(), other.image.pixels().data(), one.image.pixel_count() * sizeof(Spectrum)) != 0);
+    }
+}

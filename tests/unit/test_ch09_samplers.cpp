@@ -1,0 +1,299 @@
+// Chapter 09's sequences and samplers: the Sobol points and the scrambled sampler's points are
+// nets (every elementary interval counted), the stratified sampler stratifies each block, the
+// scramble keeps what it must and randomizes the rest, and every number depends only on (seed,
+// pixel, sample index, dimension). Deterministic except the three chi-square tests of the
+// scrambles' randomness (label unit, unit_test_alpha each; tests/STATISTICS.md counts them).
+#include "freezeray/ch09/owen_scrambling.hpp"
+#include "freezeray/ch09/radical_inverse.hpp"
+#include "freezeray/ch09/sobol_matrices.hpp"
+#include "freezeray/ch09/sobol_sampler.hpp"
+#include "freezeray/ch09/stratified_sampler.hpp"
+#include "freezeray/random.hpp"
+
+#include "statistics.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <vector>
+
+using namespace freezeray;
+using namespace freezeray::ch09;
+
+namespace {
+
+// True when the 2^m points are a (0, m, 2)-net in base 2: for every a = 0 .. m, each of the 2^m
+// boxes of 2^-a by 2^-(m-a) holds exactly one point. `what` names the first failing shape.
+bool is_02_net(const std::vector<Vec2>& points, int m, std::string& what) {
+    const std::size_t n = std::size_t{1} << m;
+    if (points.size() != n) {
+        what = "not 2^m points";
+        return false;
+    }
+    for (int a = 0; a <= m; ++a) {
+        std::vector<int> count(n, 0);
+        for (const Vec2& p : points) {
+            if (!(p.x >= 0.0f && p.x < 1.0f && p.y >= 0.0f && p.y < 1.0f)) {
+                what = "a point outside [0, 1)^2";
+                return false;
+            }
+            const auto i = static_cast<std::size_t>(std::ldexp(p.x, a));
+            const auto j = static_cast<std::size_t>(std::ldexp(p.y, m - a));
+            ++count[(i << (m - a)) | j];
+        }
+        for (int c : count)
+            if (c != 1) {
+                what = "boxes of 2^-" + std::to_string(a) + " x 2^-" + std::to_string(m - a);
+                return false;
+            }
+    }
+    return true;
+}
+
+// True when the 2^m numbers fill the 2^m intervals [j 2^-m, (j + 1) 2^-m) once each.
+bool is_01_net(const std::vector<float>& values, int m) {
+    const std::size_t n = std::size_t{1} << m;
+    if (values.size() != n) return false;
+    std::vector<int> count(n, 0);
+    for (float v : values) {
+        if (!(v >= 0.0f && v < 1.0f)) return false;
+        ++count[static_cast<std::size_t>(std::ldexp(v, m))];
+    }
+    for (int c : count)
+        if (c != 1) return false;
+    return true;
+}
+
+// The draws of one pixel's samples [first, first + count) at one place of the layout.
+enum class Draw { Pixel, LightPosition1, BsdfDirection1, BsdfDirection4, LightChoice1, Roulette3, BsdfLobe16 };
+
+Vec2 draw_2d(Sampler& s, Draw d) {
+    switch (d) {
+        case Draw::Pixel: return s.pixel_2d();
+        case Draw::LightPosition1: s.start_vertex(1); return s.get_2d(VertexDimension::LightPosition);
+        case Draw::BsdfDirection1: s.start_vertex(1); return s.get_2d(VertexDimension::BsdfDirection);
+        default: s.start_vertex(4); return s.get_2d(VertexDimension::BsdfDirection);
+    }
+}
+
+float draw_1d(Sampler& s, Draw d) {
+    switch (d) {
+        case Draw::LightChoice1: s.start_vertex(1); return s.get_1d(VertexDimension::LightChoice);
+        case Draw::Roulette3: s.start_vertex(3); return s.get_1d(VertexDimension::Roulette);
+        default: s.start_vertex(16); return s.get_1d(VertexDimension::BsdfLobe);
+    }
+}
+
+std::vector<Vec2> pixel_points(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d) {
+    std::vector<Vec2> points;
+    for (std::uint64_t i = first; i < first + count; ++i) {
+        s.start_pixel_sample(static_cast<int>(pixel % 64), static_cast<int>(pixel / 64), pixel, i);
+        points.push_back(draw_2d(s, d));
+    }
+    return points;
+}
+
+std::vector<float> pixel_values(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d) {
+    std::vector<float> values;
+    for (std::uint64_t i = first; i < first + count; ++i) {
+        s.start_pixel_sample(static_cast<int>(pixel % 64), static_cast<int>(pixel / 64), pixel, i);
+        values.push_back(draw_1d(s, d));
+    }
+    return values;
+}
+
+// Pearson's chi-square statistic of points in a cells x cells grid against uniform, its p-value.
+double uniform_grid_p_value(const std::vector<Vec2>& points, int cells) {
+    std::vector<double> count(static_cast<std::size_t>(cells * cells), 0.0);
+    for (const Vec2& p : points)
+        ++count[static_cast<std::size_t>(static_cast<int>(p.y * cells) * cells + static_cast<int>(p.x * cells))];
+    const double expected = static_cast<double>(points.size()) / (cells * cells);
+    double chi2 = 0.0;
+    for (double c : count) chi2 += (c - expected) * (c - expected) / expected;
+    return stats::chi_square_survival(chi2, cells * cells - 1.0);
+}
+
+}  // namespace
+
+TEST_CASE("reverse_bits is the base-2 radical inverse in 0.32 fixed point", "[unit][ch09]") {
+    CHECK(reverse_bits(1u) == 0x80000000u);
+    CHECK(reverse_bits(6u) == 0x60000000u);  // 110b -> 0.011b
+    PCG32 random(5, 9);
+    for (int i = 0; i < 1000; ++i) {
+        const std::uint32_t x = random.next_uint();
+        REQUIRE(reverse_bits(reverse_bits(x)) == x);
+        REQUIRE(reverse_bits(x) * 0x1p-32 == radical_inverse(2, x));
+    }
+}
+
+TEST_CASE("each Sobol dimension is a (0,1)-sequence and dimensions 0 and 1 a (0,2)-sequence", "[unit][ch09]") {
+    // A (0, s)-sequence: every block of 2^m points from a multiple of 2^m is a (0, m, s)-net.
+    for (int m = 0; m <= 12; ++m)
+        for (std::uint32_t block : {0u, 1u, 5u}) {
+            const std::uint32_t first = block << m;
+            for (int d = 0; d < SobolDimensions; ++d) {
+                std::vector<float> values;
+                for (std::uint32_t i = first; i < first + (1u << m); ++i) values.push_back(sobol_sample(i, d));
+                INFO("dimension " << d << ", m = " << m << ", block " << block);
+                REQUIRE(is_01_net(values, m));
+            }
+            std::vector<Vec2> points;
+            for (std::uint32_t i = first; i < first + (1u << m); ++i) points.emplace_back(sobol_sample(i, 0), sobol_sample(i, 1));
+            std::string what;
+            INFO("m = " << m << ", block " << block << ": " << what);
+            REQUIRE(is_02_net(points, m, what));
+        }
+    // Dimension 0 is the van der Corput sequence.
+    for (std::uint32_t i = 0; i < 4096; ++i) REQUIRE(sobol_sample_bits(i, 0) == reverse_bits(i));
+    CHECK_THROWS_AS(sobol_generator_matrix(SobolDimensions), std::out_of_range);
+    CHECK_THROWS_AS(sobol_generator_matrix(-1), std::out_of_range);
+}
+
+TEST_CASE("a nested uniform scramble flips each bit by a function of the bits above it", "[unit][ch09]") {
+    PCG32 random(11, 3);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const std::uint32_t seed = random.next_uint();
+        const std::uint32_t x = random.next_uint();
+        const int j = static_cast<int>(random.next_below(32));  // x and y share their top j bits
+        const std::uint32_t high = j == 0 ? 0u : ~0u << (32 - j);
+        const std::uint32_t y = (x & high) | (random.next_uint() & ~high);
+        REQUIRE((nested_uniform_scramble(x, seed) & high) == (nested_uniform_scramble(y, seed) & high));
+    }
+    // A bijection: all 2^16 top halves go to 2^16 different top halves.
+    std::set<std::uint32_t> images;
+    for (std::uint32_t i = 0; i < 65536; ++i) images.insert(nested_uniform_scramble(i << 16, 0x1234567u) >> 16);
+    CHECK(images.size() == 65536u);
+    // And different seeds give different permutations.
+    CHECK(nested_uniform_scramble(0x40000000u, 1) != nested_uniform_scramble(0x40000000u, 2));
+}
+
+TEST_CASE("the sobol sampler's draws over any 2^m samples of a pixel from a multiple of 2^m are nets", "[unit][ch09]") {
+    SobolSampler sampler;
+    for (std::uint64_t seed : {0ull, 77ull}) {
+        sampler.set_seed(seed);
+        for (std::uint32_t pixel : {0u, 1u, 4097u})
+            for (int m = 0; m <= 10; ++m)
+                for (std::uint64_t block : {0ull, 1ull, 6ull}) {
+                    const std::uint64_t first = block << m, count = std::uint64_t{1} << m;
+                    for (Draw d : {Draw::Pixel, Draw::LightPosition1, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
+                        std::string what;
+                        const bool net = is_02_net(pixel_points(sampler, pixel, first, count, d), m, what);
+                        INFO("seed " << seed << ", pixel " << pixel << ", m = " << m << ", block " << block << ", draw "
+                                     << static_cast<int>(d) << ": " << what);
+                        REQUIRE(net);
+                    }
+                    for (Draw d : {Draw::LightChoice1, Draw::Roulette3, Draw::BsdfLobe16}) {
+                        INFO("seed " << seed << ", pixel " << pixel << ", m = " << m << ", 1D draw " << static_cast<int>(d));
+                        REQUIRE(is_01_net(pixel_values(sampler, pixel, first, count, d), m));
+                    }
+                }
+    }
+}
+
+TEST_CASE("the sobol sampler's scrambles make each point uniform and the pairs independent", "[unit][ch09]") {
+    // Three chi-square tests of 4096 points in a 16 x 16 grid (255 degrees of freedom), each at
+    // unit_test_alpha: (1) sample 3 of 4096 pixels, pixel position: the per-pixel scrambles must
+    // spread it uniformly; (2) the same for vertex 2's light choice against vertex 5's roulette
+    // across pixels: two dimensions of a pixel must not be tied; (3) within one pixel, 4096
+    // samples' pixel x against vertex 1's light choice: different dimensions are shuffled
+    // independently (the same shuffle would put every point on the diagonal).
+    SobolSampler sampler;
+    sampler.set_seed(3);
+    std::vector<Vec2> across_pixels, two_dimensions, within_pixel;
+    for (std::uint32_t pixel = 0; pixel < 4096; ++pixel) {
+        sampler.start_pixel_sample(static_cast<int>(pixel % 64), static_cast<int>(pixel / 64), pixel, 3);
+        across_pixels.push_back(sampler.pixel_2d());
+        sampler.start_vertex(2);
+        const float choice = sampler.get_1d(VertexDimension::LightChoice);
+        sampler.start_vertex(5);
+        two_dimensions.emplace_back(choice, sampler.get_1d(VertexDimension::Roulette));
+    }
+    for (std::uint64_t i = 0; i < 4096; ++i) {
+        sampler.start_pixel_sample(7, 3, 199, i);
+        const float x = sampler.pixel_2d().x;
+        sampler.start_vertex(1);
+        within_pixel.emplace_back(x, sampler.get_1d(VertexDimension::LightChoice));
+    }
+    CHECK(uniform_grid_p_value(across_pixels, 16) > stats::unit_test_alpha);
+    CHECK(uniform_grid_p_value(two_dimensions, 16) > stats::unit_test_alpha);
+    CHECK(uniform_grid_p_value(within_pixel, 16) > stats::unit_test_alpha);
+}
+
+TEST_CASE("permutation_element is a permutation of 0 .. n - 1 for every n and seed", "[unit][ch09]") {
+    for (std::uint32_t n : {1u, 2u, 3u, 7u, 64u, 100u, 1000u, 1024u, 4097u})
+        for (std::uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
+            std::vector<int> hit(n, 0);
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const std::uint32_t p = permutation_element(i, n, seed);
+                REQUIRE(p < n);
+                ++hit[p];
+            }
+            for (int h : hit) REQUIRE(h == 1);
+        }
+    // Different seeds, different permutations.
+    int same = 0;
+    for (std::uint32_t i = 0; i < 64; ++i) same += permutation_element(i, 64, 1) == permutation_element(i, 64, 2);
+    CHECK(same < 32);
+}
+
+TEST_CASE("the stratified sampler stratifies every block of 1, 1, 2, 4, ... samples", "[unit][ch09]") {
+    StratifiedSampler sampler;
+    sampler.set_seed(5);
+    for (int k = 0; k <= 10; ++k) {
+        const std::uint64_t first = k == 0 ? 1 : std::uint64_t{1} << k, count = std::uint64_t{1} << k;
+        for (Draw d : {Draw::Pixel, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
+            const std::vector<Vec2> points = pixel_points(sampler, 12, first, count, d);
+            // The cells of the 2^ceil(k/2) x 2^floor(k/2) grid: the (a = ceil(k/2)) boxes of a net.
+            const int columns_log2 = (k + 1) / 2;
+            std::vector<int> cells(count, 0);
+            for (const Vec2& p : points) {
+                REQUIRE(p.x >= 0.0f);
+                REQUIRE(p.x < 1.0f);
+                REQUIRE(p.y >= 0.0f);
+                REQUIRE(p.y < 1.0f);
+                const auto column = static_cast<std::size_t>(std::ldexp(p.x, columns_log2));
+                const auto row = static_cast<std::size_t>(std::ldexp(p.y, k - columns_log2));
+                ++cells[(row << columns_log2) | column];
+            }
+            INFO("block of 2^" << k << ", draw " << static_cast<int>(d));
+            for (int c : cells) REQUIRE(c == 1);
+        }
+        for (Draw d : {Draw::LightChoice1, Draw::Roulette3}) {
+            INFO("block of 2^" << k << ", 1D draw " << static_cast<int>(d));
+            REQUIRE(is_01_net(pixel_values(sampler, 12, first, count, d), k));
+        }
+    }
+    // Sample 0 is a block of its own: samples 0 and 1 are not stratified together, 0 to 3 need not be.
+    const std::vector<float> first_two = pixel_values(sampler, 12, 0, 2, Draw::LightChoice1);
+    CHECK(first_two[0] != first_two[1]);
+}
+
+TEST_CASE("a sampler's numbers depend on (seed, pixel, sample, dimension) only", "[unit][ch09]") {
+    // Each dimension's number is the same whatever else was drawn before it, in whichever sampler
+    // (a clone on another thread): the pixel loop's results cannot depend on the thread or order.
+    SobolSampler sobol;
+    StratifiedSampler stratified;
+    for (Sampler* s : {static_cast<Sampler*>(&sobol), static_cast<Sampler*>(&stratified)}) {
+        s->set_seed(42);
+        s->start_pixel_sample(3, 4, 259, 37);
+        const Vec2 pixel = s->pixel_2d();
+        s->start_vertex(2);
+        const float roulette = s->get_1d(VertexDimension::Roulette);
+        const Vec2 light = s->get_2d(VertexDimension::LightPosition);
+
+        const auto other = s->clone();
+        other->start_pixel_sample(9, 9, 9, 9);  // somewhere else first
+        other->pixel_2d();
+        other->start_pixel_sample(3, 4, 259, 37);
+        other->start_vertex(2);
+        CHECK(other->get_2d(VertexDimension::LightPosition) == light);  // in another order
+        CHECK(other->get_1d(VertexDimension::Roulette) == roulette);
+        CHECK(other->pixel_2d() == pixel);
+
+        other->set_seed(43);  // another seed: other numbers
+        other->start_pixel_sample(3, 4, 259, 37);
+        CHECK(other->pixel_2d() != pixel);
+    }
+}
