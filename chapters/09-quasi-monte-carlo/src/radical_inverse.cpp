@@ -22,14 +22,4 @@ double radical_inverse(std::uint32_t base, std::uint64_t index) {
 }
 // END BOOK
 
-std::uint32_t reverse_bits(std::uint32_t x) {
-    // Swap halves, then quarters, ... (Warren, "Hacker's Delight", 2nd ed. 2012, section 7-1).
-    x = (x << 16) | (x >> 16);
-    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
-    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
-    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
-    x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
-    return x;
-}
-
 }  // namespace freezeray::ch09

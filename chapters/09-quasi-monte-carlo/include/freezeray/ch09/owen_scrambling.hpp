@@ -3,6 +3,8 @@
 // 2011; Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4), 2020).
 #pragma once
 
+#include "freezeray/ch09/radical_inverse.hpp"
+
 #include <cstdint>
 
 namespace freezeray::ch09 {
@@ -10,15 +12,31 @@ namespace freezeray::ch09 {
 // A permutation of 32-bit words in which bit k of the result depends only on bits 0 to k of x
 // (and on the seed): additions and multiplications by even constants carry only upwards. Burley's
 // constants (2020, listing 3).
-std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed);
+// Inline, like the scramble below: a sampler calls them several times per draw.
+inline std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return x;
+}
 
 // Owen's nested uniform scramble of a 0.32 fraction: each bit is flipped or not according to a
 // hash of the bits above it, so the fraction's every dyadic interval [j 2^-m, (j+1) 2^-m) goes
 // whole to another one. Points of a (t, m, s)-net stay a (t, m, s)-net; each point alone becomes
 // uniform in [0, 1).
-std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed);
+// BOOK(owen-scramble)
+inline std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed) {
+    // Reversed, the fraction's most significant bit is bit 0, on which every other bit of the
+    // permutation may depend: bit k of the fraction is flipped by a function of the bits above it.
+    return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
+}
+// END BOOK
 
 // The seed of one scramble from several values (Burley 2020's hash_combine, a Boost-style mix).
-std::uint32_t hash_combine(std::uint32_t seed, std::uint32_t value);
+inline std::uint32_t hash_combine(std::uint32_t seed, std::uint32_t value) {
+    return seed ^ (value + 0x9e3779b9u + (seed << 6) + (seed >> 2));
+}
 
 }  // namespace freezeray::ch09
