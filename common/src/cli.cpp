@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <set>
 #include <filesystem>
@@ -83,13 +84,15 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
     for (const std::string& c : crops) request.crops.push_back(parse_crop(c));
     const Comparison comparison = run_comparison(request, registry);
     write_comparison_report(comparison, request.out_folder);
+    int name_width = 12;  // the runs' names in one column, however long ("pt-mis@stratified")
+    for (const IntegratorRun& run : comparison.runs) name_width = std::max(name_width, static_cast<int>(run.integrator.size()));
     for (const IntegratorRun& run : comparison.runs) {
         char slope[48] = "no fit";
         if (run.fit.has_interval())
             std::snprintf(slope, sizeof slope, "slope %.2f (%.2f to %.2f)", run.fit.slope, run.fit.slope_low, run.fit.slope_high);
         else if (run.fit.points > 0)
             std::snprintf(slope, sizeof slope, "slope %.2f (no interval)", run.fit.slope);
-        std::fprintf(stderr, "%-12s %8llu spp %8.2f s  relMSE %-10.4g%s  %s\n", run.integrator.c_str(),
+        std::fprintf(stderr, "%-*s %8llu spp %8.2f s  relMSE %-10.4g%s  %s\n", name_width, run.integrator.c_str(),
                      static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, run.relative_mse,
                      run.error_is_estimated ? " (estimated)" : "", slope);
         for (const std::string& w : run.result.warnings) std::fprintf(stderr, "warning: %s: %s\n", run.integrator.c_str(), w.c_str());
