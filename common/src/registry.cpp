@@ -106,6 +106,15 @@ void Registry::add_option(OptionDeclaration option) {
     options_.push_back(std::move(option));
 }
 
+void Registry::add_option_user(const std::string& flag, const std::string& capability) {
+    for (OptionDeclaration& o : options_)
+        if (o.flag == flag) {
+            if (std::find(o.used_by.begin(), o.used_by.end(), capability) == o.used_by.end()) o.used_by.push_back(capability);
+            return;
+        }
+    throw std::logic_error("option " + flag + " is not declared");
+}
+
 void Registry::set_default_accelerator(const std::string& name) {
     if (!accelerators_.count(name)) throw std::logic_error("default accelerator '" + name + "' is not registered");
     default_accelerator_ = name;

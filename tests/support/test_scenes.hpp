@@ -6,6 +6,8 @@
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <optional>
 #include <string>
 
@@ -45,6 +47,8 @@ struct TestRender {
     // asks for "bruteforce": the default KD-tree runs chapter 06's exercises, which a student
     // of an earlier chapter has not written yet.
     std::string accelerator;
+    // The accelerator's settings, as its flags would give them ({"simd_width": 4}).
+    nlohmann::json accelerator_settings = nlohmann::json::object();
 };
 
 // Loads and renders, quietly.

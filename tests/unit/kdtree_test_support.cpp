@@ -2,6 +2,8 @@
 #include "kdtree_test_support.hpp"
 #include "test_scenes.hpp"
 
+#include "freezeray/ch07/packet_kernels.hpp"
+
 #include "freezeray/ch01/warps.hpp"
 
 #include <bit>
@@ -11,15 +13,28 @@
 
 namespace freezeray::testing {
 
-const std::vector<std::string>& accelerators_under_test() {
-    // Every accelerator the complete renderer has, but the reference itself.
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> result;
-        for (const Registry::Entry& e : full_registry().list(CapabilityKind::Accelerator))
-            if (e.name != "bruteforce") result.push_back(e.name);
+std::unique_ptr<Accelerator> AcceleratorUnderTest::make() const {
+    const Parameters parameters(settings, "test", "/accelerator", ".");
+    return full_registry().make_accelerator(name, "test", &parameters);
+}
+
+const std::vector<AcceleratorUnderTest>& accelerators_under_test() {
+    static const std::vector<AcceleratorUnderTest> accelerators = [] {
+        std::vector<AcceleratorUnderTest> result;
+        for (const Registry::Entry& e : full_registry().list(CapabilityKind::Accelerator)) {
+            if (e.name == "bruteforce") continue;
+            if (e.name != "kdtree-simd") {
+                result.push_back({e.name, e.name});
+                continue;
+            }
+            for (const ch07::PacketKernel& kernel : ch07::built_kernels())
+                if (ch07::cpu_runs(kernel))
+                    result.push_back({e.name + " (width " + std::to_string(kernel.width) + ")", e.name,
+                                      nlohmann::json{{"simd_width", kernel.width}}});
+        }
         return result;
     }();
-    return names;
+    return accelerators;
 }
 
 TriangleMesh make_mesh(std::vector<Vec3> positions, std::vector<std::array<std::uint32_t, 3>> triangles) {
@@ -175,10 +190,11 @@ bool same_hit(const std::optional<Hit>& a, const std::optional<Hit>& b) {
 
 }  // namespace
 
-Conformance compare_with_brute_force(const std::string& accelerator, const std::vector<TriangleMesh>& meshes,
+Conformance compare_with_brute_force(const AcceleratorUnderTest& under_test, const std::vector<TriangleMesh>& meshes,
                                      const std::vector<Ray>& rays, std::uint64_t seed) {
     const auto brute_force = full_registry().make_accelerator("bruteforce", "test");
-    const auto tested = full_registry().make_accelerator(accelerator, "test");
+    const auto tested = under_test.make();
+    const std::string& accelerator = under_test.label;
     brute_force->build(meshes);
     tested->build(meshes);
     Bounds3 bounds;

@@ -7,7 +7,10 @@
 #include "freezeray/ray.hpp"
 #include "freezeray/registry.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,9 +18,19 @@ namespace freezeray::testing {
 
 
 
-// The accelerators that must agree with brute force on every ray. A later chapter's
-// accelerator (kdtree-simd) joins this list.
-const std::vector<std::string>& accelerators_under_test();
+// An accelerator as a test builds it: its registered name and the settings it is made with
+// ("simd_width": 4), under a label for messages ("kdtree-simd (width 4)").
+struct AcceleratorUnderTest {
+    std::string label;
+    std::string name;
+    nlohmann::json settings = nlohmann::json::object();
+    std::unique_ptr<Accelerator> make() const;
+};
+
+// The accelerators that must agree with brute force on every ray: every accelerator the
+// complete renderer has but brute force itself, and chapter 07's kdtree-simd at every packet
+// width this processor runs.
+const std::vector<AcceleratorUnderTest>& accelerators_under_test();
 
 TriangleMesh make_mesh(std::vector<Vec3> positions, std::vector<std::array<std::uint32_t, 3>> triangles);
 
@@ -47,7 +60,7 @@ struct Conformance {
 
 // Builds `accelerator` and bruteforce over the meshes and compares, for every ray, intersect
 // (no hit, or the same mesh, triangle and t bits) and occluded with a random tmax.
-Conformance compare_with_brute_force(const std::string& accelerator, const std::vector<TriangleMesh>& meshes,
+Conformance compare_with_brute_force(const AcceleratorUnderTest& accelerator, const std::vector<TriangleMesh>& meshes,
                                      const std::vector<Ray>& rays, std::uint64_t seed);
 
 }  // namespace freezeray::testing

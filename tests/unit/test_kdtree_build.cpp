@@ -29,9 +29,9 @@ using ch06::KdTreeNode;
 namespace {
 
 void check_conformance(const std::vector<TriangleMesh>& meshes, const Bounds3& origins, int count, std::uint64_t seed) {
-    for (const std::string& name : accelerators_under_test()) {
-        const Conformance c = compare_with_brute_force(name, meshes, mixed_rays(meshes, origins, count, seed), seed);
-        INFO(name << ": " << c.mismatches << " answers of " << c.rays << " rays differ from bruteforce\n" << c.report);
+    for (const AcceleratorUnderTest& accelerator : accelerators_under_test()) {
+        const Conformance c = compare_with_brute_force(accelerator, meshes, mixed_rays(meshes, origins, count, seed), seed);
+        INFO(accelerator.label << ": " << c.mismatches << " answers of " << c.rays << " rays differ from bruteforce\n" << c.report);
         CHECK(c.mismatches == 0);
     }
 }

@@ -21,9 +21,9 @@ namespace {
 
 void check_conformance(const std::string& what, const std::vector<TriangleMesh>& meshes, const std::vector<Ray>& rays,
                        std::uint64_t seed) {
-    for (const std::string& name : accelerators_under_test()) {
-        const Conformance c = compare_with_brute_force(name, meshes, rays, seed);
-        INFO(what << ": " << name << ": " << c.mismatches << " answers of " << c.rays << " rays differ from bruteforce\n"
+    for (const AcceleratorUnderTest& accelerator : accelerators_under_test()) {
+        const Conformance c = compare_with_brute_force(accelerator, meshes, rays, seed);
+        INFO(what << ": " << accelerator.label << ": " << c.mismatches << " answers of " << c.rays << " rays differ from bruteforce\n"
                   << c.report);
         CHECK(c.rays == rays.size());
         CHECK(c.mismatches == 0);

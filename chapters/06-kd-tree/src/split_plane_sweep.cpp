@@ -18,7 +18,8 @@ SplitPlane find_split_plane(const NodeEvents& events, const Bounds3& cell, std::
         // whole cell and every triangle: no progress (and the empty bonus would repeat forever).
         if (position == cell.min[axis] && below == 0) return;
         if (position == cell.max[axis] && above == 0) return;
-        const double cost = split_cost(settings, cell, axis, position, below, above);
+        const double cost = split_cost(settings, cell, axis, position, intersection_tests(settings, below),
+                                       intersection_tests(settings, above));
         if (cost < best.cost) best = SplitPlane{axis, position, planar_below, cost, below, above};
     };
 

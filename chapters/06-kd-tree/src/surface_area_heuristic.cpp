@@ -10,9 +10,14 @@ double surface_area(const Bounds3& box) {
     return 2.0 * (dx * dy + dy * dz + dz * dx);
 }
 
+std::size_t intersection_tests(const KdTreeSettings& settings, std::size_t triangle_count) {
+    const std::size_t per_test = static_cast<std::size_t>(settings.triangles_per_test > 1 ? settings.triangles_per_test : 1);
+    return (triangle_count + per_test - 1) / per_test;
+}
+
 // BOOK(sah-cost-model)
 double leaf_cost(const KdTreeSettings& settings, std::size_t triangle_count) {
-    return static_cast<double>(settings.intersection_cost) * static_cast<double>(triangle_count);
+    return static_cast<double>(settings.intersection_cost) * static_cast<double>(intersection_tests(settings, triangle_count));
 }
 
 double split_cost(const KdTreeSettings& settings, const Bounds3& cell, int axis, float position,

@@ -37,7 +37,7 @@ const char* quantity_name(TraversalQuantity quantity) {
 
 RenderResult TraversalCostIntegrator::render(const Scene& scene, const RenderSettings& settings,
                                              Progress& progress) const {
-    const auto* tree = dynamic_cast<const KdTreeAccelerator*>(scene.accelerator.get());
+    const auto* tree = dynamic_cast<const CountedTraversal*>(scene.accelerator.get());
     if (tree == nullptr)
         throw InputError("--integrator", "traversal-cost counts the KD-tree's work, but this scene's accelerator is '" +
                                              scene.accelerator_name + "' (use --accel kdtree)");

@@ -83,6 +83,9 @@ public:
     void add_sampler(const std::string& name, int chapter, const std::string& summary, SamplerFactory factory);
     // A command-line option of a chapter's capability (options.hpp). Its flag must be new.
     void add_option(OptionDeclaration option);
+    // A later chapter's capability that reads an option declared before it (chapter 07's
+    // kdtree-simd reads the kdtree's settings): `capability` joins the option's used_by.
+    void add_option_user(const std::string& flag, const std::string& capability);
 
     // The accelerator and texture layout used when neither the scene nor the command line names
     // one: bruteforce and the first registered layout, until a chapter says otherwise (chapter 06

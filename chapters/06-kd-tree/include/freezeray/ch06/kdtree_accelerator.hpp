@@ -3,9 +3,11 @@
 #pragma once
 
 #include "freezeray/accelerator.hpp"
+#include "freezeray/ch06/close_hits.hpp"
 #include "freezeray/ch06/kdtree_node.hpp"
 #include "freezeray/ch06/kdtree_settings.hpp"
 #include "freezeray/ch06/kdtree_statistics.hpp"
+#include "freezeray/ch06/kdtree_traversal.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -15,13 +17,15 @@
 
 namespace freezeray::ch06 {
 
-// The work of one closest-hit query: the interior nodes and leaves it visited and the triangles
-// it tested (a triangle in several leaves is tested, and counted, in each).
-struct TraversalCounts {
-    std::uint32_t interior_nodes = 0, leaves = 0, triangle_tests = 0;
+// An accelerator whose closest-hit queries can be counted (the traversal-cost integrator's
+// images): chapter 06's tree, and chapter 07's, which counts packet tests as triangle tests.
+class CountedTraversal {
+public:
+    virtual ~CountedTraversal() = default;
+    virtual TraversalCounts count_traversal(const Ray& ray) const = 0;
 };
 
-class KdTreeAccelerator final : public Accelerator {
+class KdTreeAccelerator final : public Accelerator, public CountedTraversal {
 public:
     explicit KdTreeAccelerator(const KdTreeSettings& settings = {});
 
@@ -35,7 +39,7 @@ public:
     bool occluded(const Ray& ray) const override;
 
     // What intersect(ray) does, counted (the traversal-cost integrator's images).
-    TraversalCounts count_traversal(const Ray& ray) const;
+    TraversalCounts count_traversal(const Ray& ray) const override;
 
     std::vector<std::pair<std::string, std::string>> describe() const override;
     // The nodes, the leaves' lists and the triangle copies (KdTreeStatistics::memory_bytes).
@@ -44,6 +48,16 @@ public:
     const KdTreeSettings& settings() const { return settings_; }
     const KdTreeStatistics& statistics() const { return statistics_; }
     const KdTree& tree() const { return tree_; }
+
+    // What an accelerator on the same tree needs to answer as this one does (chapter 07 repacks
+    // the leaves, it does not rebuild): the triangles' vertices by global index; the hit brute
+    // force reports among the close hits a walk found; whether a hit of `triangle` blocks a
+    // shadow ray as it would in brute force (the ray must also meet its mesh's box).
+    const std::vector<TriangleVertices>& triangle_vertices() const { return vertices_; }
+    std::optional<Hit> brute_force_answer(const Ray& ray, const Walk& walk, const RayShear& shear, CloseHits& close) const;
+    bool blocks(const Ray& ray, const Walk& walk, std::uint32_t triangle) const {
+        return ray_intersects_bounds(ray, walk.inverse_direction, brute_force_.mesh_bounds()[ids_[triangle].mesh]);
+    }
 
 private:
     // intersect, telling `counter` of its work (kdtree_traversal.cpp, the only user).

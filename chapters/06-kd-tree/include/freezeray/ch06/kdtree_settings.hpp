@@ -35,6 +35,10 @@ struct KdTreeSettings {
     int max_unproductive_refinements = 2;
     // Threads the build may use; 0: one per core. The tree does not depend on it.
     int build_threads = 0;
+    // The triangles one intersection test handles: 1 in this chapter. Chapter 07 tests packets of
+    // W triangles at once; a node of n triangles then costs ceil(n / W) tests, and the tree it
+    // builds has leaves that fill their packets. Not a key of the scene's block: chapter 07 sets it.
+    int triangles_per_test = 1;
 };
 
 // The maximum depth the build uses for n triangles: the setting, or the automatic one, never

@@ -15,11 +15,17 @@ namespace freezeray::ch06 {
 // A flat box (zero extent along one axis) still has the area of its two faces.
 double surface_area(const Bounds3& box);
 
-// The cost of making a node of n triangles a leaf: every ray that reaches it tests them all.
+// The intersection tests a ray makes in a leaf of n triangles: n, or ceil(n / W) when the
+// triangles are tested W at a time (settings.triangles_per_test, chapter 07's packets).
+std::size_t intersection_tests(const KdTreeSettings& settings, std::size_t triangle_count);
+
+// The cost of making a node of n triangles a leaf: every ray that reaches it tests them all
+// (intersection_tests of them).
 double leaf_cost(const KdTreeSettings& settings, std::size_t triangle_count);
 
 // The cost of splitting `cell` (positive surface area) at `position` along `axis`, with
-// below_count triangles in the child below the plane and above_count in the child above:
+// below_count tests in the child below the plane and above_count in the child above (triangles,
+// or packets: see intersection_tests):
 // C = C_traversal + (1 - bonus) (SA_below / SA N_below + SA_above / SA N_above) C_intersect,
 // where SA_x / SA is the probability that a ray meeting the cell meets the child (Wald and Havran
 // 2006, the SAH cost C_V(p) with pbrt-v3's form of the bonus), and the bonus (settings.empty_bonus) applies only when one child is empty.
