@@ -249,11 +249,18 @@ int run_render(const RenderOptions& options, const Registry& registry) {
         return 128 + static_cast<int>(received_signal);
     }
     if (!options.quiet) {
-        // The estimate comes from the per-pixel variance, which assumes independent samples.
-        const std::string estimate_note = sampler.name == "independent" ? "" : " (as if independent: " + sampler.name + "'s is lower)";
-        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, estimated relMSE %.4g%s\n", made_by.integrator.c_str(),
-                     result.image.width(), result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),
-                     format_duration(result.seconds).c_str(), result.estimated_relative_mse, estimate_note.c_str());
+        // The estimate comes from the per-pixel variance, which assumes independent samples; an
+        // image that is no estimate of light (traversal-cost) has none.
+        std::string estimate = "no error estimate";
+        if (result.estimated_relative_mse >= 0.0) {
+            char text[64];
+            std::snprintf(text, sizeof text, "estimated relMSE %.4g", result.estimated_relative_mse);
+            estimate = text;
+            if (sampler.name != "independent") estimate += " (as if independent: " + sampler.name + "'s is lower)";
+        }
+        std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, %s\n", made_by.integrator.c_str(), result.image.width(),
+                     result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),
+                     format_duration(result.seconds).c_str(), estimate.c_str());
     }
     std::cout << out << "\n";
     return 0;

@@ -20,6 +20,9 @@ for show in nodes leaves tests; do
     check "traversal-cost --traversal-cost-show $show renders (status $status)" test $status -eq 0
     check "the $show image is written" test -s "$work/$show.png"
     check "the note gives the $show scale: $notes" grep -q "traversal-cost: .* per camera ray, viridis from 0" <<<"$notes"
+    check "the summary says there is no error estimate (a count is not an estimate of light): $notes" \
+        grep -q "1 spp, .*, no error estimate$" <<<"$notes"
+    check "the summary prints no negative relMSE" bash -c '! grep -q "relMSE -" <<<"$1"' _ "$notes"
 done
 # The Cornell box's tree: a camera ray visits some interior nodes and tests a few triangles.
 notes=$("$ch06" render "$scene" --integrator traversal-cost --width 16 --height 16 --spp 1 --out "$work/n.pfm" 2>&1)
