@@ -107,8 +107,7 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
 // written yet leaves a gap.
 std::string chapters_contained(const Registry& registry) {
     std::set<int> chapters;
-    for (CapabilityKind kind : {CapabilityKind::Integrator, CapabilityKind::Material, CapabilityKind::Accelerator,
-                                CapabilityKind::Light, CapabilityKind::TextureLayout, CapabilityKind::Sampler})
+    for (CapabilityKind kind : all_capability_kinds)
         for (const Registry::Entry& e : registry.list(kind))
             if (e.chapter >= 1 && e.chapter <= registry.chapter()) chapters.insert(e.chapter);
     std::vector<std::string> runs;  // "01 to 06", "09"

@@ -86,22 +86,25 @@ float draw_1d(Sampler& s, Draw d) {
     }
 }
 
-std::vector<Vec2> pixel_points(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d) {
-    std::vector<Vec2> points;
+// The draws of samples first .. first + count - 1 of one pixel: `draw(sampler, d)` after each
+// sample is started (draw_2d for points, draw_1d for values).
+template <typename Value>
+std::vector<Value> pixel_draws(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d,
+                               Value (*draw)(Sampler&, Draw)) {
+    std::vector<Value> draws;
     for (std::uint64_t i = first; i < first + count; ++i) {
         s.start_pixel_sample(static_cast<int>(pixel % 64), static_cast<int>(pixel / 64), pixel, i);
-        points.push_back(draw_2d(s, d));
+        draws.push_back(draw(s, d));
     }
-    return points;
+    return draws;
+}
+
+std::vector<Vec2> pixel_points(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d) {
+    return pixel_draws<Vec2>(s, pixel, first, count, d, draw_2d);
 }
 
 std::vector<float> pixel_values(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d) {
-    std::vector<float> values;
-    for (std::uint64_t i = first; i < first + count; ++i) {
-        s.start_pixel_sample(static_cast<int>(pixel % 64), static_cast<int>(pixel / 64), pixel, i);
-        values.push_back(draw_1d(s, d));
-    }
-    return values;
+    return pixel_draws<float>(s, pixel, first, count, d, draw_1d);
 }
 
 // Pearson's chi-square statistic of points in a cells x cells grid against uniform, its p-value.
@@ -265,9 +268,19 @@ TEST_CASE("the stratified sampler stratifies every block of 1, 1, 2, 4, ... samp
             REQUIRE(is_01_net(pixel_values(sampler, 12, first, count, d), k));
         }
     }
-    // Sample 0 is a block of its own: samples 0 and 1 are not stratified together, 0 to 3 need not be.
-    const std::vector<float> first_two = pixel_values(sampler, 12, 0, 2, Draw::LightChoice1);
-    CHECK(first_two[0] != first_two[1]);
+    // Sample 0 is a block of its own, and so is sample 1: the two are independent draws, not
+    // stratified together. Were they one block of 2, they would never fall in the same half of
+    // [0, 1). Over 4000 pixels the count of pixels where they do is Binomial(4000, 1/2): mean
+    // 2000, standard deviation 31.6; the bound of 5 deviations fails falsely with probability
+    // 6e-7 (fixed seed: the outcome is deterministic).
+    int same_half = 0;
+    constexpr int pixels = 4000;
+    for (std::uint32_t pixel = 0; pixel < pixels; ++pixel) {
+        const std::vector<float> first_two = pixel_values(sampler, pixel, 0, 2, Draw::LightChoice1);
+        same_half += (first_two[0] < 0.5f) == (first_two[1] < 0.5f) ? 1 : 0;
+    }
+    INFO(same_half << " of " << pixels << " pixels have samples 0 and 1 in the same half");
+    CHECK(std::abs(same_half - pixels / 2) < 5 * 31.6);
 }
 
 TEST_CASE("a sampler's numbers depend on (seed, pixel, sample, dimension) only", "[unit][ch09]") {

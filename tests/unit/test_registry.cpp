@@ -59,8 +59,7 @@ TEST_CASE("the course catalogue lists exactly what the complete renderer registe
         if (!chapter_is_written(entry.chapter)) CHECK_FALSE(registry.has(entry.kind, entry.name));
     }
     // ... and every registered one is catalogued, with the chapter that registered it.
-    for (CapabilityKind kind : {CapabilityKind::Integrator, CapabilityKind::Material, CapabilityKind::Accelerator,
-                                CapabilityKind::Light, CapabilityKind::TextureLayout, CapabilityKind::Sampler})
+    for (CapabilityKind kind : all_capability_kinds)
         for (const Registry::Entry& entry : registry.list(kind)) {
             INFO(capability_kind_name(kind) << " '" << entry.name << "' introduced by chapter " << entry.introduced_in);
             CHECK(registry.chapter_introducing(kind, entry.name) == entry.introduced_in);

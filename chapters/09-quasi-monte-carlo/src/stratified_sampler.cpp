@@ -41,7 +41,7 @@ std::uint32_t permutation_element(std::uint32_t i, std::uint32_t length, std::ui
 }
 
 void StratifiedSampler::begin(int, int, std::uint32_t pixel_index, std::uint64_t sample_index) {
-    pixel_key_ = mix_bits(seed() ^ mix_bits((static_cast<std::uint64_t>(pixel_index) << 32) ^ 0x2545f4914f6cdd1dULL));
+    pixel_key_ = pixel_key(seed(), pixel_index, 0x2545f4914f6cdd1dULL);
     sample_index_ = sample_index;
     // Blocks: {0}, {1}, {2, 3}, {4 .. 7}, ...: sample s > 0 is in the block of 2^k from 2^k, k = floor(log2 s).
     const std::uint64_t s = std::min<std::uint64_t>(sample_index, 0x80000000u);  // blocks stop doubling at 2^31
@@ -57,8 +57,7 @@ std::uint32_t StratifiedSampler::stratum(std::uint32_t dimension) const {
 }
 
 float StratifiedSampler::jitter(std::uint32_t dimension) const {
-    PCG32 random(mix_bits(mix_bits(pixel_key_ + sample_index_) ^ dimension), 0x14057b7ef767814fULL);
-    return random.next_float();
+    return hashed_uniform(mix_bits(mix_bits(pixel_key_ + sample_index_) ^ dimension));
 }
 
 float StratifiedSampler::sample_1d(std::uint32_t dimension) {

@@ -63,10 +63,23 @@ inline std::uint64_t mix_bits(std::uint64_t v) {
     return v;
 }
 
+// A 64-bit key for one pixel of a render with this seed. `salt` keeps apart the keys of different
+// users (the independent sampler, chapter 09's samplers), so that their numbers are unrelated.
+inline std::uint64_t pixel_key(std::uint64_t seed, std::uint32_t pixel_index, std::uint64_t salt) {
+    return mix_bits(seed ^ mix_bits((static_cast<std::uint64_t>(pixel_index) << 32) ^ salt));
+}
+
+// A uniform float in [0, 1) that depends only on `key`: the first number of a PCG32 stream it
+// seeds. For numbers addressed by (pixel, sample, dimension) rather than drawn in sequence.
+inline float hashed_uniform(std::uint64_t key) {
+    PCG32 random(key, 0x14057b7ef767814fULL);
+    return random.next_float();
+}
+
 // The stream for one sample of one pixel. Every random number of that sample comes from it,
 // so a pixel's value never depends on which thread rendered it or in which order.
 inline PCG32 make_pixel_stream(std::uint64_t seed, std::uint32_t pixel_index, std::uint64_t sample_index) {
-    const std::uint64_t key = mix_bits(seed ^ mix_bits((static_cast<std::uint64_t>(pixel_index) << 32) ^ 0x9e3779b97f4a7c15ULL));
+    const std::uint64_t key = pixel_key(seed, pixel_index, 0x9e3779b97f4a7c15ULL);
     return PCG32(mix_bits(key + sample_index), key);
 }
 

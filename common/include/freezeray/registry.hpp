@@ -49,6 +49,11 @@ using AreaLightFactory =
 
 // The kinds of things the registry names.
 enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout, Sampler };
+// Every kind, in the order above: a loop over the registry's contents uses this list, so a new
+// kind cannot be forgotten there.
+inline constexpr CapabilityKind all_capability_kinds[] = {CapabilityKind::Integrator,   CapabilityKind::Material,
+                                                         CapabilityKind::Accelerator,  CapabilityKind::Light,
+                                                         CapabilityKind::TextureLayout, CapabilityKind::Sampler};
 const char* capability_kind_name(CapabilityKind kind);
 
 // One line of a course's table of contents: the chapter that introduces a named capability.

@@ -33,6 +33,8 @@ protected:
 private:
     std::uint64_t dimension_key(std::uint32_t dimension) const;
     float hashed_random(std::uint32_t dimension) const;
+    // The pixel's sample index shuffled for the dimension whose key this is.
+    std::uint32_t shuffled_index(std::uint64_t key) const;
 
     std::uint64_t pixel_key_ = 0;
     std::uint64_t sample_index_ = 0;
