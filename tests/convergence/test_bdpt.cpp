@@ -8,12 +8,12 @@
 #include "image_tests.hpp"
 #include "independent_runs.hpp"
 #include "statistics.hpp"
+#include "determinism.hpp"
 #include "test_scenes.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstring>
 #include <vector>
 
 using namespace freezeray;
@@ -72,9 +72,9 @@ TEST_CASE("a bdpt image is bit-identical with 1 and 2 threads", "[convergence][d
     const RenderResult one = render_bdpt("cornell-box/scene.json", 5, 3, 40, 1);
     const RenderResult two = render_bdpt("cornell-box/scene.json", 5, 3, 40, 2);
     REQUIRE(one.image.pixel_count() == two.image.pixel_count());
-    CHECK(std::memcmp(one.image.pixels().data(), two.image.pixels().data(), one.image.pixel_count() * sizeof(Spectrum)) == 0);
+    CHECK(testing::bit_identical(one.image, two.image));
     const RenderResult other = render_bdpt("cornell-box/scene.json", 6, 3, 40, 2);
-    CHECK(std::memcmp(one.image.pixels().data(), other.image.pixels().data(), one.image.pixel_count() * sizeof(Spectrum)) != 0);
+    CHECK(!testing::bit_identical(one.image, other.image));
 }
 
 TEST_CASE("bdpt's weighted strategy images add up to its image (every contribution is in exactly one strategy "

@@ -3,11 +3,11 @@
 #include "freezeray/image.hpp"
 
 #include "independent_runs.hpp"
+#include "determinism.hpp"
 #include "test_scenes.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <cstring>
 #include <vector>
 
 using namespace freezeray;
@@ -35,12 +35,11 @@ TEST_CASE("a light-tracing image is bit-identical with 1 and 2 threads", "[conve
     const RenderResult one = render_light_tracing("cornell-box/scene.json", 99, 6, 40, 1);
     const RenderResult two = render_light_tracing("cornell-box/scene.json", 99, 6, 40, 2);
     REQUIRE(one.image.pixel_count() == two.image.pixel_count());
-    CHECK(std::memcmp(one.image.pixels().data(), two.image.pixels().data(), one.image.pixel_count() * sizeof(Spectrum)) == 0);
-    CHECK(std::memcmp(one.variance.pixels().data(), two.variance.pixels().data(),
-                      one.variance.pixel_count() * sizeof(Spectrum)) == 0);
+    CHECK(testing::bit_identical(one.image, two.image));
+    CHECK(testing::bit_identical(one.variance, two.variance));
     CHECK(one.samples_per_pixel == 6u);
     const RenderResult other = render_light_tracing("cornell-box/scene.json", 100, 6, 40, 2);
-    CHECK(std::memcmp(one.image.pixels().data(), other.image.pixels().data(), one.image.pixel_count() * sizeof(Spectrum)) != 0);
+    CHECK(!testing::bit_identical(one.image, other.image));
 }
 
 TEST_CASE("light tracing converges to pt-mis's image of the Cornell box (a wrong splat normalisation, a missing "

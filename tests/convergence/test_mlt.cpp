@@ -9,11 +9,11 @@
 
 #include "independent_runs.hpp"
 #include "statistics.hpp"
+#include "determinism.hpp"
 #include "test_scenes.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <cstring>
 
 using namespace freezeray;
 
@@ -51,13 +51,7 @@ TEST_CASE("an mlt image is bit-identical with 1 and 2 threads", "[convergence][d
     request.seed = 12;
     request.mlt_bootstrap = 5000;
     request.mlt_chains = 64;
-    request.threads = 1;
-    const RenderResult one = testing::render(request);
-    request.threads = 2;
-    const RenderResult two = testing::render(request);
-    REQUIRE(one.image.pixel_count() == two.image.pixel_count());
-    CHECK(std::memcmp(one.image.pixels().data(), two.image.pixels().data(), one.image.pixel_count() * sizeof(Spectrum)) == 0);
-    CHECK(one.samples_per_pixel == 4u);
+    testing::check_thread_count_independent(request);
 }
 
 TEST_CASE("mlt's bootstrap estimate of b equals bdpt's mean image luminance within their standard errors",
