@@ -3,6 +3,7 @@
 // around the packet width agree with brute force, and images rendered with kdtree-simd at every
 // width are those of kdtree to the bit. (The conformance tests of test_kdtree_conformance.cpp run
 // kdtree-simd at every width this processor has, on the same 1.1 million rays as kdtree.)
+#include "determinism.hpp"
 #include "kdtree_test_support.hpp"
 #include "test_bounds.hpp"
 #include "test_scenes.hpp"
@@ -16,7 +17,6 @@
 #include <catch2/catch.hpp>
 
 #include <bit>
-#include <cstring>
 
 using namespace freezeray;
 using namespace freezeray::testing;
@@ -179,11 +179,7 @@ TEST_CASE("kdtree-simd: images are those of kdtree, bit for bit, at every width"
         request.accelerator = "kdtree-simd";
         request.accelerator_settings = {{"simd_width", kernel.width}};
         const RenderResult found = render(request);
-        REQUIRE(found.image.width() == expected.image.width());
-        const auto& a = expected.image.pixels();
-        const auto& b = found.image.pixels();
-        REQUIRE(a.size() == b.size());
-        CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+        CHECK(bit_identical(found.image, expected.image));
     }
 }
 
@@ -210,4 +206,34 @@ TEST_CASE("kdtree-simd: a width the processor cannot run is refused with the wid
     for (const auto& [key, value] : accelerator.describe())
         if (key == "simd width") has_width = value.find(std::to_string(ch07::widest_kernel().width)) == 0;
     CHECK(has_width);
+}
+
+TEST_CASE("kdtree-simd: with chapter 06's leaf cost, the walk is kdtree's and a leaf's tests are its packets", "[unit][kdtree][ch07]") {
+    // The same tree (--simd-leaf-cost triangles) visits the same nodes and leaves for every ray;
+    // where kdtree tests n triangles in a leaf, kdtree-simd tests ceil(n / W) packets.
+    const std::vector<TriangleMesh> meshes{icosphere(2), random_soup(300, 0.2f, 5)};
+    const std::vector<Ray> rays = mixed_rays(meshes, box(Vec3(-2.0f), Vec3(2.0f)), 3000, 41);
+    ch06::KdTreeAccelerator tree;
+    tree.build(meshes);
+    for (const ch07::PacketKernel& kernel : runnable_kernels()) {
+        ch07::KdTreeSimdSettings settings;
+        settings.simd_width = kernel.width;
+        settings.packet_leaf_cost = false;
+        ch07::KdTreeSimdAccelerator simd(settings);
+        simd.build(meshes);
+        REQUIRE(simd.packets().tree().nodes.size() == tree.tree().nodes.size());
+        std::size_t fewer_tests = 0, more_tests = 0;
+        for (const Ray& ray : rays) {
+            const ch06::TraversalCounts a = tree.count_traversal(ray), b = simd.count_traversal(ray);
+            INFO(kernel.instructions << ", ray " << describe_ray(ray));
+            REQUIRE(a.interior_nodes == b.interior_nodes);
+            REQUIRE(a.leaves == b.leaves);
+            fewer_tests += b.triangle_tests < a.triangle_tests ? 1 : 0;
+            more_tests += b.triangle_tests > a.triangle_tests ? 1 : 0;
+        }
+        INFO(kernel.instructions);
+        CHECK(more_tests == 0);
+        if (kernel.width > 1) CHECK(fewer_tests > 0);
+        else CHECK(fewer_tests == 0);  // one lane: a packet is a triangle
+    }
 }
