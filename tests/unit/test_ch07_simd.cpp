@@ -237,3 +237,19 @@ TEST_CASE("kdtree-simd: with chapter 06's leaf cost, the walk is kdtree's and a 
         else CHECK(fewer_tests == 0);  // one lane: a packet is a triangle
     }
 }
+
+TEST_CASE("kdtree-simd: the automatic depth limit counts packets, round(8 + 1.3 log2(N / W))", "[unit][kdtree][ch07]") {
+    // Sponza's 262,266 triangles: 31 for one triangle per test (chapter 06, pbrt-v3's rule), and
+    // the same rule for N / W: 26 at W = 16, 28 at 8, 29 at 4. Fewer triangles than a packet: 8.
+    ch06::KdTreeSettings settings;
+    CHECK(ch06::effective_max_depth(settings, 262266) == 31);
+    const std::pair<int, int> expected[] = {{4, 29}, {8, 28}, {16, 26}};
+    for (const auto& [width, depth] : expected) {
+        settings.triangles_per_test = width;
+        INFO("W = " << width);
+        CHECK(ch06::effective_max_depth(settings, 262266) == depth);
+        CHECK(ch06::effective_max_depth(settings, 3) == 8);
+    }
+    settings.max_depth = 20;  // an explicit depth is kept
+    CHECK(ch06::effective_max_depth(settings, 262266) == 20);
+}

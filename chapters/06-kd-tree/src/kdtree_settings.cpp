@@ -15,8 +15,10 @@ int effective_max_depth(const KdTreeSettings& settings, std::size_t triangle_cou
     int depth = settings.max_depth;
     if (depth <= 0) {
         // pbrt-v3, section 4.4.2: deep enough for the tree to adapt to N triangles, shallow
-        // enough to stop a runaway build (a cluster of triangles that no plane separates).
-        const double n = static_cast<double>(std::max<std::size_t>(triangle_count, 1));
+        // enough to stop a runaway build (a cluster of triangles that no plane separates). With
+        // triangles tested W at a time (chapter 07), the tree adapts to N / W packets' worth.
+        const double per_test = static_cast<double>(std::max(settings.triangles_per_test, 1));
+        const double n = std::max(static_cast<double>(std::max<std::size_t>(triangle_count, 1)) / per_test, 1.0);
         depth = static_cast<int>(std::lround(8.0 + 1.3 * std::log2(n)));
     }
     return std::clamp(depth, 1, TraversalStackSize);

@@ -24,7 +24,8 @@ struct KdTreeSettings {
     // emptyBonus; Wald and Havran 2006 write the factor lambda = 1 - bonus).
     float empty_bonus = 0.5f;
     // The depth at which every node becomes a leaf; 0: automatic, round(8 + 1.3 log2 N) for N
-    // triangles (pbrt-v3, section 4.4.2), at most TraversalStackSize.
+    // triangles (pbrt-v3, section 4.4.2), at most TraversalStackSize; N / triangles_per_test
+    // when triangles are tested several at a time.
     int max_depth = 0;
     // A node with at most this many triangles becomes a leaf without a split being tried
     // (pbrt-v3's maxPrims). 0 leaves every decision to the cost model, as in Wald and Havran.
