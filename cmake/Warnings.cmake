@@ -2,9 +2,9 @@
 function(freezeray_set_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow=local)
   # No a * b + c fused into one rounding behind the code's back: chapter 07's vector triangle test
-  # must give the scalar test's t to the bit, and with -march=native (or the AVX kernels' flags)
-  # g++ would fuse in one and not the other. The default x86-64 target has no FMA, so this
-  # changes nothing there.
+  # must give the scalar test's t to the bit, and with -march=native (or -mavx512f, which implies
+  # FMA, for the AVX-512 kernel) g++ would fuse in one path and not the other. The default x86-64
+  # target has no FMA, so this changes nothing there.
   target_compile_options(${target} PRIVATE -ffp-contract=off)
   if(FREEZERAY_WERROR)
     target_compile_options(${target} PRIVATE -Werror)
