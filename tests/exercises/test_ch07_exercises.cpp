@@ -86,8 +86,7 @@ TEST_CASE("ch07/inside-mask", "[exercise]") {
         std::string first;
         for (const Ray& ray : rays) {
             const RayShear shear(ray.direction);
-            const PacketRay packet_ray{{ray.origin.x, ray.origin.y, ray.origin.z}, shear.kx, shear.ky, shear.kz,
-                                       shear.sx, shear.sy, shear.sz, ray.tmax};
+            const PacketRay packet_ray = make_packet_ray(ray, shear);
             for (std::size_t start = 0; start < triangles.size(); start += width) {
                 // Packed here, not by pack_triangles (the other exercise): lane l of vertex v on
                 // axis a at (3 v + a) width + l.
@@ -99,7 +98,7 @@ TEST_CASE("ch07/inside-mask", "[exercise]") {
                         for (int axis = 0; axis < 3; ++axis)
                             coordinates[(3 * vertex + axis) * width + lane] = corners[vertex][axis];
                 }
-                kernel.test(packet_ray, coordinates.data(), width >= 32 ? ~0u : (1u << width) - 1u, hits);
+                kernel.test(packet_ray, coordinates.data(), first_lanes(static_cast<std::uint32_t>(width)), hits);
                 for (int lane = 0; lane < width; ++lane) {
                     if ((hits.edge_lanes >> lane) & 1u) continue;  // the scalar test's to decide
                     const ch06::TriangleVertices& t = triangles[lanes[lane]];

@@ -47,10 +47,9 @@ struct LaneComparison {
 
 // Every ray against every triangle, packed `width` at a time with the last packet padded: each
 // valid lane's answer (hit or not; t and b0, b1, b2 bits) against intersect_triangle's. Edge lanes
-// are handed to the scalar test by design; they are counted, and must be lanes where the scalar
-// test's single-precision edge functions are zero, which the test checks by asking whether the
-// scalar answer is unchanged when computed by the kernel path (it is, by construction, the
-// scalar test).
+// are not compared: the kernel hands them to the scalar test, which decides them (the
+// accelerator's conformance tests cover that path); they are counted, so that a caller can require
+// that the path was taken, and a lane in both masks is a mismatch.
 LaneComparison compare_lanes(const ch07::PacketKernel& kernel, const std::vector<ch06::TriangleVertices>& vertices,
                              const std::vector<Ray>& rays) {
     const int width = kernel.width;
@@ -62,12 +61,11 @@ LaneComparison compare_lanes(const ch07::PacketKernel& kernel, const std::vector
     ch07::PacketHits hits;
     for (const Ray& ray : rays) {
         const RayShear shear(ray.direction);
-        const ch07::PacketRay packet_ray{{ray.origin.x, ray.origin.y, ray.origin.z}, shear.kx, shear.ky, shear.kz,
-                                         shear.sx, shear.sy, shear.sz, ray.tmax};
+        const ch07::PacketRay packet_ray = ch07::make_packet_ray(ray, shear);
         for (std::size_t first = 0; first < vertices.size(); first += width) {
             const int count = static_cast<int>(std::min<std::size_t>(width, vertices.size() - first));
             ch07::pack_triangles(vertices, order.data() + first, count, width, coordinates.data(), lanes.data());
-            kernel.test(packet_ray, coordinates.data(), (count >= 32 ? ~0u : (1u << count) - 1u), hits);
+            kernel.test(packet_ray, coordinates.data(), ch07::first_lanes(static_cast<std::uint32_t>(count)), hits);
             // Padded lanes repeat a real triangle, so a ray through it would hit them: they
             // must be in neither mask.
             if ((hits.hit_lanes | hits.edge_lanes) >> count) {

@@ -17,14 +17,6 @@ namespace freezeray::ch07 {
 
 namespace {
 
-PacketRay make_packet_ray(const Ray& ray, const RayShear& shear) {
-    return {{ray.origin.x, ray.origin.y, ray.origin.z}, shear.kx, shear.ky, shear.kz,
-            shear.sx, shear.sy, shear.sz, ray.tmax};
-}
-
-// The mask of the first `count` lanes.
-std::uint32_t first_lanes(std::uint32_t count) { return count >= 32 ? ~0u : (1u << count) - 1u; }
-
 // BOOK(packet-hits)
 // Calls on_hit(global triangle, TriangleHit) for each triangle of a leaf the ray hits, packet by
 // packet and in lane order. The kernel decides most lanes; a lane on an edge is decided by the

@@ -9,6 +9,13 @@
 
 namespace freezeray::ch07 {
 
+PacketRay make_packet_ray(const Ray& ray, const RayShear& shear) {
+    return {{ray.origin.x, ray.origin.y, ray.origin.z}, shear.kx, shear.ky, shear.kz,
+            shear.sx, shear.sy, shear.sz, ray.tmax};
+}
+
+std::uint32_t first_lanes(std::uint32_t count) { return count >= 32 ? ~0u : (1u << count) - 1u; }
+
 const std::vector<PacketKernel>& built_kernels() {
     static const std::vector<PacketKernel> kernels{
         {1, "scalar", intersect_packet_scalar},

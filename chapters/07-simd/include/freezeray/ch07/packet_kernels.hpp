@@ -2,7 +2,10 @@
 #pragma once
 
 #include "freezeray/ch07/packet_ray.hpp"
+#include "freezeray/ray.hpp"
+#include "freezeray/triangle_intersection.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +17,14 @@ void intersect_packet_scalar(const PacketRay& ray, const float* coordinates, std
 void intersect_packet_sse(const PacketRay& ray, const float* coordinates, std::uint32_t valid_lanes, PacketHits& hits);
 void intersect_packet_avx(const PacketRay& ray, const float* coordinates, std::uint32_t valid_lanes, PacketHits& hits);
 void intersect_packet_avx512(const PacketRay& ray, const float* coordinates, std::uint32_t valid_lanes, PacketHits& hits);
+
+// The ray as the kernels read it: its origin and tmax, and the permutation and shear of `shear`.
+// (Defined in packet_kernels.cpp, compiled with the default flags, as everything outside the
+// kernels' own files.)
+PacketRay make_packet_ray(const Ray& ray, const RayShear& shear);
+
+// The mask of a packet's first `count` lanes: those that hold a triangle.
+std::uint32_t first_lanes(std::uint32_t count);
 
 struct PacketKernel {
     int width;                 // lanes: 1, 4, 8 or 16
