@@ -20,7 +20,9 @@ Without them, the figure is not made (exit status 0, a message says why).
 from __future__ import annotations
 
 import argparse
+import re
 import statistics
+import subprocess
 import sys
 from pathlib import Path
 
@@ -52,17 +54,22 @@ def measure(args: argparse.Namespace, mesh: Path, rays: Path, extra: list[str]) 
     return rows
 
 
-def runnable_widths(args: argparse.Namespace, mesh: Path, rays: Path) -> list[int]:
-    """The widths this processor runs: those ray-benchmark accepts with --simd-width (--limit 1 run)."""
-    import subprocess
-    widths = []
-    for width in (1, 4, 8, 16):
-        result = subprocess.run([str(ray_benchmark(args.build_dir)), str(mesh), "--rays", str(rays), "--accel",
-                                 "kdtree-simd", "--limit", "1", "--reps", "1", "--json", "--simd-width", str(width)],
-                                capture_output=True, text=True)
-        if result.returncode == 0:
-            widths.append(width)
-    return widths
+def runnable_widths(args: argparse.Namespace) -> list[int]:
+    """The widths this processor runs, as ray-benchmark's --help states them for --simd-width
+    ("... (this processor runs 1, 4, 8 and 16; ...")."""
+    result = subprocess.run([str(ray_benchmark(args.build_dir)), "--help"], capture_output=True, text=True)
+    match = re.search(r"this processor runs ([0-9, and]+);", " ".join(result.stdout.split()))
+    if not match:
+        sys.exit("simd_figures: ray-benchmark --help does not list the widths this processor runs")
+    return [int(w) for w in re.findall(r"[0-9]+", match.group(1))]
+
+
+def write_figure(out: Path, svg: str, table: list[str]) -> None:
+    """The plot at `out`, its table as table.md beside it (and on standard output)."""
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(svg)
+    (out.parent / "table.md").write_text("\n".join(table) + "\n")
+    print("\n".join(table))
 
 
 def widths_figure(args: argparse.Namespace) -> int:
@@ -70,7 +77,7 @@ def widths_figure(args: argparse.Namespace) -> int:
     if batches is None:
         return 0
     mesh, rays = batches
-    widths = runnable_widths(args, mesh, rays)
+    widths = runnable_widths(args)
     ratios = {w: {k: [] for k in KINDS} for w in widths}       # kdtree-simd / kdtree, per round
     to_embree = {w: {k: [] for k in KINDS} for w in widths}    # kdtree-simd / Embree
     rates = {w: {k: [] for k in KINDS} for w in widths}
@@ -85,10 +92,8 @@ def widths_figure(args: argparse.Namespace) -> int:
                     to_embree[w][k].append(simd / rows["embree"][k]["mrays_per_s"])
     series = [{"name": f"{k} rays", "colour": colour,
                "points": [(w, statistics.median(ratios[w][k])) for w in widths]} for k, colour in KINDS.items()]
-    out = Path(args.out)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(svg_plot(series, "packet width W (lanes)", "Mrays/s of kdtree-simd / kdtree (same run)",
-                            "Sponza: the packet test's speed-up per width, one thread", False, False))
+    svg = svg_plot(series, "packet width W (lanes)", "Mrays/s of kdtree-simd / kdtree (same run)",
+                   "Sponza: the packet test's speed-up per width, one thread", False, False)
     table = ["| W | primary × kdtree | diffuse × kdtree | shadow × kdtree | diffuse Mrays/s | diffuse × Embree |",
              "| --: | --: | --: | --: | --: | --: |"]
     for w in widths:
@@ -100,8 +105,7 @@ def widths_figure(args: argparse.Namespace) -> int:
                      f"{statistics.median(rates[w]['diffuse']):.3g} | {embree} |")
     table += ["", f"Medians over {args.rounds} rounds (widths in turn in each round), the range in brackets; each "
               f"figure the median of {args.repetitions} timed runs after a warm-up, one thread."]
-    (out.parent / "table.md").write_text("\n".join(table) + "\n")
-    print("\n".join(table))
+    write_figure(Path(args.out), svg, table)
     return 0
 
 
@@ -115,10 +119,8 @@ def depth_sweep_figure(args: argparse.Namespace) -> int:
     series = [{"name": f"{accel} diffuse", "colour": colour,
                "points": [(d, measured[d][accel]["diffuse"]["mrays_per_s"]) for d in depths]}
               for accel, colour in (("kdtree", "#7f8c8d"), ("kdtree-simd", "#c0392b"))]
-    out = Path(args.out)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(svg_plot(series, "maximum depth (automatic: 31)", "diffuse Mrays/s (one thread)",
-                            "Sponza: diffuse rays per second against the depth limit", False, False))
+    svg = svg_plot(series, "maximum depth (automatic: 31)", "diffuse Mrays/s (one thread)",
+                   "Sponza: diffuse rays per second against the depth limit", False, False)
     table = ["| max depth | kdtree diffuse Mrays/s | kdtree-simd diffuse Mrays/s | kdtree-simd / kdtree | "
              "kdtree-simd build ms | kdtree-simd memory MB | kdtree memory MB |",
              "| --: | --: | --: | --: | --: | --: | --: |"]
@@ -129,8 +131,7 @@ def depth_sweep_figure(args: argparse.Namespace) -> int:
                      f"{simd.get('memory_mb') or 0:.1f} | {tree.get('memory_mb') or 0:.1f} |")
     table += ["", f"Each row one run of both accelerators (the widest packet width), each figure the median of "
               f"{args.repetitions} timed runs after a warm-up, one thread."]
-    (out.parent / "table.md").write_text("\n".join(table) + "\n")
-    print("\n".join(table))
+    write_figure(Path(args.out), svg, table)
     return 0
 
 
