@@ -22,11 +22,7 @@ namespace {
 template <typename F>
 void for_each_triangle(const KdTree& tree, const KdTreeNode& leaf, F&& f) {
     const std::uint32_t count = leaf.triangle_count();
-    if (count == 1) {
-        f(leaf.one_triangle());
-        return;
-    }
-    const std::uint32_t* list = tree.leaf_triangles.data() + leaf.triangle_offset();
+    const std::uint32_t* list = leaf_triangle_list(tree, leaf);
     for (std::uint32_t i = 0; i < count; ++i)
         if (!f(list[i])) return;
 }

@@ -38,12 +38,13 @@ TrianglePackets::TrianglePackets(const ch06::KdTree& tree, const std::vector<ch0
     lanes_.assign(packets * width, 0u);
 
     std::uint32_t next = 0;
-    for (ch06::KdTreeNode& node : tree_.nodes) {
-        if (!node.is_leaf()) continue;
-        const std::uint32_t count = node.triangle_count();
-        const std::uint32_t one = node.one_triangle();
-        const std::uint32_t* list = count == 1 ? &one : tree.leaf_triangles.data() + node.triangle_offset();
-        node = ch06::KdTreeNode::leaf(count, next);
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+        // The triangles from chapter 06's node; the copy's node then points at the packets.
+        const ch06::KdTreeNode& leaf = tree.nodes[i];
+        if (!leaf.is_leaf()) continue;
+        const std::uint32_t count = leaf.triangle_count();
+        const std::uint32_t* list = ch06::leaf_triangle_list(tree, leaf);
+        tree_.nodes[i] = ch06::KdTreeNode::leaf(count, next);
         for (std::uint32_t first = 0; first < count; first += width, ++next) {
             const int in_packet = static_cast<int>(std::min<std::uint32_t>(width, count - first));
             pack_triangles(vertices, list + first, in_packet, width, coordinates_.data() + std::size_t(next) * floats_,

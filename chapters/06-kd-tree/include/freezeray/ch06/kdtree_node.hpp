@@ -35,6 +35,8 @@ public:
     std::uint32_t above_child() const { return flags_ >> 2; }
     std::uint32_t triangle_count() const { return flags_ >> 2; }
     std::uint32_t one_triangle() const { return payload_; }
+    // The one triangle of a one-triangle leaf, as a list of one (see leaf_triangle_list).
+    const std::uint32_t* one_triangle_list() const { return &payload_; }
     std::uint32_t triangle_offset() const { return payload_; }
 
     // Sets an interior node's above child once the below subtree is written.
@@ -70,5 +72,10 @@ struct KdTree {
     std::vector<KdTreeNode> nodes;
     std::vector<std::uint32_t> leaf_triangles;
 };
+
+// A leaf's triangle_count() triangles: the one kept in the node, or its list in leaf_triangles.
+inline const std::uint32_t* leaf_triangle_list(const KdTree& tree, const KdTreeNode& leaf) {
+    return leaf.triangle_count() == 1 ? leaf.one_triangle_list() : tree.leaf_triangles.data() + leaf.triangle_offset();
+}
 
 }  // namespace freezeray::ch06
