@@ -9,21 +9,22 @@
 #include "freezeray/ch05/register_chapter05.hpp"
 #include "freezeray/ch06/register_chapter06.hpp"
 #include "freezeray/ch07/register_chapter07.hpp"
+#include "freezeray/ch08/register_chapter08.hpp"
 #include "freezeray/ch09/register_chapter09.hpp"
 
 namespace freezeray {
 
 namespace {
 
-// Every written chapter's number and register function, in the order of the course (08 is not
-// written yet).
+// Every written chapter's number and register function, in the order of the course.
 struct Chapter {
     int number;
     void (*register_chapter)(Registry&);
 };
 const Chapter chapters[] = {
     {1, register_chapter01}, {2, register_chapter02}, {3, register_chapter03}, {4, register_chapter04},
-    {5, register_chapter05}, {6, register_chapter06}, {7, register_chapter07}, {9, register_chapter09},
+    {5, register_chapter05}, {6, register_chapter06}, {7, register_chapter07},
+    {8, register_chapter08}, {9, register_chapter09},
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-// ch09: the renderer of chapters 01 to 07 and 09 (chapter 08 is not written yet).
+// ch09: the renderer of chapters 01 to 09.
 #include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/ch03/register_chapter03.hpp"
@@ -6,6 +6,7 @@
 #include "freezeray/ch05/register_chapter05.hpp"
 #include "freezeray/ch06/register_chapter06.hpp"
 #include "freezeray/ch07/register_chapter07.hpp"
+#include "freezeray/ch08/register_chapter08.hpp"
 #include "freezeray/ch09/register_chapter09.hpp"
 #include "freezeray/cli.hpp"
 
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
     freezeray::register_chapter05(registry);
     freezeray::register_chapter06(registry);
     freezeray::register_chapter07(registry);
+    freezeray::register_chapter08(registry);
     freezeray::register_chapter09(registry);
     return freezeray::run_command_line(argc, argv, registry);
 }

@@ -235,11 +235,16 @@ std::unique_ptr<Accelerator> Registry::make_accelerator(const std::string& name,
     return it->second.second(options != nullptr ? *options : no_parameters());
 }
 
-std::shared_ptr<const TextureStorage> Registry::make_texture_storage(const std::string& layout, const Image& image,
-                                                                     const std::string& where) const {
+TextureStorageMaker Registry::texture_storage_maker(const std::string& layout, const std::string& where,
+                                                   const Parameters* settings) const {
     const auto it = texture_layouts_.find(layout);
     if (it == texture_layouts_.end()) unknown(CapabilityKind::TextureLayout, layout, where);
-    return it->second.second(image);
+    return it->second.second(settings != nullptr ? *settings : no_parameters());
+}
+
+std::shared_ptr<const TextureStorage> Registry::make_texture_storage(const std::string& layout, const Image& image,
+                                                                     const std::string& where) const {
+    return texture_storage_maker(layout, where)(image);
 }
 
 std::unique_ptr<Light> Registry::make_light(const std::string& type, const Parameters& parameters) const {

@@ -236,17 +236,18 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
 
     // The layout image textures are stored in: the command line's, else the "textures" block's,
     // else the renderer's default (none before chapter 02, which has no image textures).
+    // Its settings are read (and checked) here, whether or not the scene has image textures.
     scene.texture_layout = registry.default_texture_layout();
-    {
-        const nlohmann::json* block = top.has("textures") ? &root.at("textures") : nullptr;
-        const OptionParameters textures(block, path, "/textures", base, options.options, registry.options(),
-                                        OptionTarget::Textures);
-        const Parameters& t = textures.parameters();
-        scene.texture_layout = t.get_string("layout", scene.texture_layout);
-        if (t.has("layout")) registry.require(CapabilityKind::TextureLayout, scene.texture_layout, t.where("layout"));
-        for (std::string& w : t.unused_key_warnings()) scene.warnings.push_back(std::move(w));
-    }
-    const MaterialContext material_context{registry, scene.texture_layout};
+    const OptionParameters textures(top.has("textures") ? &root.at("textures") : nullptr, path, "/textures", base,
+                                    options.options, registry.options(), OptionTarget::Textures);
+    const Parameters& texture_settings = textures.parameters();
+    scene.texture_layout = texture_settings.get_string("layout", scene.texture_layout);
+    if (texture_settings.has("layout"))
+        registry.require(CapabilityKind::TextureLayout, scene.texture_layout, texture_settings.where("layout"));
+    if (!scene.texture_layout.empty())
+        registry.texture_storage_maker(scene.texture_layout, texture_settings.where("layout"), &texture_settings);
+    for (std::string& w : texture_settings.unused_key_warnings()) scene.warnings.push_back(std::move(w));
+    const MaterialContext material_context{registry, scene.texture_layout, &texture_settings};
 
     // Material overrides by name: {"name": {...}}; with a "type" they replace the MTL
     // material, without one they change some of its parameters.

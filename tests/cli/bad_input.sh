@@ -82,9 +82,13 @@ expect_failure "an integrator option out of range in the scene" "bad-mlt-option.
 echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"accelerator\": {\"type\": \"octree\"} }" > "$work/unknown-accelerator.json"
 expect_failure "unknown accelerator in the scene" "unknown-accelerator.json: /accelerator/type" "octree" -- render "$work/unknown-accelerator.json" --out "$work/out.png"
 expect_failure "unknown accelerator on the command line" "--accel" "did you mean" -- render "$work/good.json" --accel brutforce --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"textures\": {\"filter\": \"nearest\"} }" > "$work/nearest.json"
+expect_failure "unknown texture filter in the scene" "nearest.json: /textures/filter" "bilinear, trilinear" -- render "$work/nearest.json" --out "$work/out.png"
+expect_failure "unknown texture filter on the command line" "--texture-filter" "bilinear, trilinear" -- render "$work/good.json" --texture-filter nearest --out "$work/out.png"
+expect_failure "impossible tile size" "--texture-tile-size" "not 3" -- render "$work/good.json" --texture-tile-size 3 --out "$work/out.png"
+renderer=$chapter01_renderer
 echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"textures\": {\"layout\": \"tiled\"} }" > "$work/tiled.json"
 expect_failure "texture layout of a later chapter" "tiled.json: /textures/layout" "introduced in chapter 08" -- render "$work/tiled.json" --out "$work/out.png"
-renderer=$chapter01_renderer
 echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"accelerator\": {\"type\": \"kdtree\"} }" > "$work/kdtree.json"
 expect_failure "accelerator of a later chapter" "/accelerator/type" "introduced in chapter 06" -- render "$work/kdtree.json" --out "$work/out.png"
 expect_failure "integrator of a later chapter" "introduced in chapter 03" -- render "$work/good.json" --integrator pt-mis --out "$work/out.png"

@@ -51,6 +51,7 @@ RenderResult render(const TestRender& request) {
     options.height = request.height;
     options.accelerator = request.accelerator;
     for (const auto& [key, value] : request.accelerator_settings.items()) options.options.values[key] = value;
+    for (const auto& [key, value] : request.texture_settings.items()) options.options.values[key] = value;
     const Scene scene = load_scene(request.scene, full_registry(), options);
     RenderSettings settings;
     settings.samples_per_pixel = request.samples_per_pixel;

@@ -49,6 +49,8 @@ struct TestRender {
     std::string accelerator;
     // The accelerator's settings, as its flags would give them ({"simd_width": 4}).
     nlohmann::json accelerator_settings = nlohmann::json::object();
+    // The texture layout and its settings, as their flags would give them ({"layout": "tiled"}).
+    nlohmann::json texture_settings = nlohmann::json::object();
 };
 
 // Loads and renders, quietly.

@@ -173,7 +173,7 @@ TEST_CASE("rough materials fall back to the smooth BSDF where the roughness is (
 TEST_CASE("anisotropy stretches alpha along u and keeps alpha_u alpha_v = roughness^4", "[unit][materials]") {
     const json description = {{"roughness", 0.5}, {"anisotropy", 1.0}};
     const Parameters p(description, "scene.json", "/materials/m", ".");
-    const TrowbridgeReitz distribution = read_microfacet_roughness(p, MaterialContext{chapter02_registry(), "linear"}, DefaultRoughness).distribution(Vec2(0.5f));
+    const TrowbridgeReitz distribution = read_microfacet_roughness(p, MaterialContext{chapter02_registry(), "linear"}, DefaultRoughness).distribution(TextureLookup{Vec2(0.5f)});
     CHECK(distribution.alpha_x() == Approx(0.25f / std::sqrt(0.1f)));
     CHECK(distribution.alpha_y() == Approx(0.25f * std::sqrt(0.1f)));
     CHECK(distribution.alpha_x() * distribution.alpha_y() == Approx(0.0625f));

@@ -54,7 +54,7 @@ LaneComparison compare_lanes(const ch07::PacketKernel& kernel, const std::vector
                              const std::vector<Ray>& rays) {
     const int width = kernel.width;
     LaneComparison result;
-    std::vector<float, ch07::CacheLineAllocator<float>> coordinates(ch07::packet_floats(width));
+    std::vector<float, CacheLineAllocator<float>> coordinates(ch07::packet_floats(width));
     std::vector<std::uint32_t> lanes(width);
     std::vector<std::uint32_t> order(vertices.size());
     for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;

@@ -98,7 +98,9 @@ TEST_CASE("every declared option has a flag, a key and a chapter this renderer h
         CHECK(d.chapter <= registry.chapter());
         CHECK(flags.insert(d.flag).second);
         for (const std::string& user : d.used_by)
-            CHECK(registry.has(d.target == OptionTarget::Integrator ? CapabilityKind::Integrator : CapabilityKind::Accelerator,
+            CHECK(registry.has(d.target == OptionTarget::Integrator    ? CapabilityKind::Integrator
+                               : d.target == OptionTarget::Accelerator ? CapabilityKind::Accelerator
+                                                                       : CapabilityKind::TextureLayout,
                                user));
     }
     Registry copy("test", 1);

@@ -50,8 +50,8 @@ TEST_CASE("a constant texture returns its value everywhere", "[unit][texture]") 
     const ConstantTexture<Spectrum> colour(Spectrum(0.1f, 0.2f, 0.3f));
     const ConstantTexture<float> number(0.7f);
     for (const Vec2 uv : {Vec2(0.0f), Vec2(0.3f, 0.9f), Vec2(-5.0f, 12.0f)}) {
-        CHECK(colour.eval(uv) == Spectrum(0.1f, 0.2f, 0.3f));
-        CHECK(number.eval(uv) == 0.7f);
+        CHECK(colour.eval({uv}) == Spectrum(0.1f, 0.2f, 0.3f));
+        CHECK(number.eval({uv}) == 0.7f);
     }
     CHECK(colour.is_constant());
     CHECK(number.minimum() == 0.7f);
@@ -62,17 +62,17 @@ TEST_CASE("bilinear filtering is exact at texel centres and midpoints of a 2x2 i
     const LinearTextureStorage storage(two_by_two());
     const ImageTexture<Spectrum> texture(std::make_shared<LinearTextureStorage>(two_by_two()), WrapMode::Clamp);
     SECTION("texel centres give the texels") {
-        check_equal(texture.eval(centre_of_texel(0, 0)), a);
-        check_equal(texture.eval(centre_of_texel(1, 0)), b);
-        check_equal(texture.eval(centre_of_texel(0, 1)), c);
-        check_equal(texture.eval(centre_of_texel(1, 1)), d);
+        check_equal(texture.eval({centre_of_texel(0, 0)}), a);
+        check_equal(texture.eval({centre_of_texel(1, 0)}), b);
+        check_equal(texture.eval({centre_of_texel(0, 1)}), c);
+        check_equal(texture.eval({centre_of_texel(1, 1)}), d);
     }
     SECTION("midpoints give the means of their neighbours") {
-        check_equal(texture.eval(Vec2(0.5f, 0.75f)), (a + b) / 2.0f);  // between the top two
-        check_equal(texture.eval(Vec2(0.25f, 0.5f)), (a + c) / 2.0f);  // between the left two
-        check_equal(texture.eval(Vec2(0.5f, 0.5f)), (a + b + c + d) / 4.0f);
+        check_equal(texture.eval({Vec2(0.5f, 0.75f)}), (a + b) / 2.0f);  // between the top two
+        check_equal(texture.eval({Vec2(0.25f, 0.5f)}), (a + c) / 2.0f);  // between the left two
+        check_equal(texture.eval({Vec2(0.5f, 0.5f)}), (a + b + c + d) / 4.0f);
         // A quarter of the way from a to b along the top row.
-        check_equal(texture.eval(Vec2(0.375f, 0.75f)), 0.75f * a + 0.25f * b);
+        check_equal(texture.eval({Vec2(0.375f, 0.75f)}), 0.75f * a + 0.25f * b);
     }
     SECTION("the storage's range bounds every lookup") {
         CHECK(storage.minimum() == Spectrum(0.0f));
@@ -86,28 +86,28 @@ TEST_CASE("wrap modes outside [0, 1]: repeat, clamp and mirror at -0.25 and 1.25
     const float top = 0.75f;  // v of the top row's centres
     SECTION("repeat: the image starts over") {
         const ImageTexture<Spectrum> texture(storage, WrapMode::Repeat);
-        check_equal(texture.eval(Vec2(-0.25f, top)), b);  // as at u = 0.75
-        check_equal(texture.eval(Vec2(1.25f, top)), a);   // as at u = 0.25
-        check_equal(texture.eval(Vec2(0.25f, -0.25f)), a);  // as at v = 0.75: the top row
-        check_equal(texture.eval(Vec2(0.25f, 1.25f)), c);   // as at v = 0.25: the bottom row
+        check_equal(texture.eval({Vec2(-0.25f, top)}), b);  // as at u = 0.75
+        check_equal(texture.eval({Vec2(1.25f, top)}), a);   // as at u = 0.25
+        check_equal(texture.eval({Vec2(0.25f, -0.25f)}), a);  // as at v = 0.75: the top row
+        check_equal(texture.eval({Vec2(0.25f, 1.25f)}), c);   // as at v = 0.25: the bottom row
         // Across the seam at u = 0 the last column blends with the first.
-        check_equal(texture.eval(Vec2(0.0f, top)), (a + b) / 2.0f);
+        check_equal(texture.eval({Vec2(0.0f, top)}), (a + b) / 2.0f);
     }
     SECTION("clamp: the edge texels stretch out") {
         const ImageTexture<Spectrum> texture(storage, WrapMode::Clamp);
-        check_equal(texture.eval(Vec2(-0.25f, top)), a);
-        check_equal(texture.eval(Vec2(1.25f, top)), b);
-        check_equal(texture.eval(Vec2(0.25f, -0.25f)), c);
-        check_equal(texture.eval(Vec2(0.25f, 1.25f)), a);
-        check_equal(texture.eval(Vec2(0.0f, top)), a);
+        check_equal(texture.eval({Vec2(-0.25f, top)}), a);
+        check_equal(texture.eval({Vec2(1.25f, top)}), b);
+        check_equal(texture.eval({Vec2(0.25f, -0.25f)}), c);
+        check_equal(texture.eval({Vec2(0.25f, 1.25f)}), a);
+        check_equal(texture.eval({Vec2(0.0f, top)}), a);
     }
     SECTION("mirror: neighbouring copies are reflections") {
         const ImageTexture<Spectrum> texture(storage, WrapMode::Mirror);
-        check_equal(texture.eval(Vec2(-0.25f, top)), a);  // as at u = 0.25
-        check_equal(texture.eval(Vec2(1.25f, top)), b);   // as at u = 0.75
-        check_equal(texture.eval(Vec2(0.25f, -0.25f)), c);  // as at v = 0.25
-        check_equal(texture.eval(Vec2(0.25f, 1.25f)), a);   // as at v = 0.75
-        check_equal(texture.eval(Vec2(0.0f, top)), a);  // no seam: the edge meets itself
+        check_equal(texture.eval({Vec2(-0.25f, top)}), a);  // as at u = 0.25
+        check_equal(texture.eval({Vec2(1.25f, top)}), b);   // as at u = 0.75
+        check_equal(texture.eval({Vec2(0.25f, -0.25f)}), c);  // as at v = 0.25
+        check_equal(texture.eval({Vec2(0.25f, 1.25f)}), a);   // as at v = 0.75
+        check_equal(texture.eval({Vec2(0.0f, top)}), a);  // no seam: the edge meets itself
     }
 }
 
@@ -129,7 +129,7 @@ TEST_CASE("huge and non-finite texture coordinates stay inside the image", "[uni
     for (WrapMode wrap : {WrapMode::Repeat, WrapMode::Clamp, WrapMode::Mirror}) {
         const ImageTexture<Spectrum> texture(storage, wrap);
         for (const Vec2 uv : {Vec2(1e9f, -3e9f), Vec2(nan, 0.5f), Vec2(0.5f, infinity), Vec2(-1e30f, 1e30f)}) {
-            const Spectrum value = texture.eval(uv);
+            const Spectrum value = texture.eval({uv});
             CHECK(is_valid_radiance(value));
             CHECK(max_component(value) <= 1.0f);
         }
@@ -144,8 +144,8 @@ TEST_CASE("v = 0 is the bottom row of the image file, as in OBJ", "[unit][textur
     write_image(folder.file("rows.png"), image);
     const ImageTexture<Spectrum> texture(load_texture_storage(folder.file("rows.png"), TextureEncoding::SRGB, testing::full_registry(), "linear"),
                                          WrapMode::Clamp);
-    check_equal(texture.eval(Vec2(0.5f, 0.1f)), Spectrum(0.0f, 0.0f, 1.0f));
-    check_equal(texture.eval(Vec2(0.5f, 0.9f)), Spectrum(1.0f, 0.0f, 0.0f));
+    check_equal(texture.eval({Vec2(0.5f, 0.1f)}), Spectrum(0.0f, 0.0f, 1.0f));
+    check_equal(texture.eval({Vec2(0.5f, 0.9f)}), Spectrum(1.0f, 0.0f, 0.0f));
 }
 
 TEST_CASE("a colour map is decoded from sRGB, a data map keeps its stored values", "[unit][texture]") {
@@ -168,7 +168,7 @@ TEST_CASE("a colour map is decoded from sRGB, a data map keeps its stored values
 TEST_CASE("a float texture reads the first channel", "[unit][texture]") {
     const auto storage = std::make_shared<LinearTextureStorage>(Image(1, 1, Spectrum(0.25f, 0.5f, 0.75f)));
     const ImageTexture<float> texture(storage, WrapMode::Repeat);
-    CHECK(texture.eval(Vec2(0.5f)) == 0.25f);
+    CHECK(texture.eval({Vec2(0.5f)}) == 0.25f);
     CHECK(texture.minimum() == 0.25f);
     CHECK(texture.maximum() == 0.25f);
     CHECK_FALSE(texture.is_constant());
@@ -214,7 +214,7 @@ TEST_CASE("a texture lookup (one virtual call, texels read inline) equals the fi
             // bilinear_lookup<TextureStorage> calls the virtual texel four times: the path every
             // lookup took before layouts had their own lookup.
             const Spectrum reference = bilinear_lookup(through_interface, uv, wrap);
-            const Spectrum value = through_interface.lookup(uv, wrap);
+            const Spectrum value = through_interface.lookup({uv}, wrap);
             for (int c = 0; c < 3; ++c) differing += std::memcmp(&reference[c], &value[c], sizeof(float)) != 0;
         }
     CHECK(differing == 0u);

@@ -39,7 +39,7 @@ private:
 }  // namespace
 
 const BSDF* MirrorMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
-    return arena.make<MirrorBSDF>(reflectance_->eval(hit.uv));
+    return arena.make<MirrorBSDF>(reflectance_->eval(hit.texture_lookup()));
 }
 
 ConductorReflectance ConductorReflectance::from_index(const Spectrum& eta, const Spectrum& k, SpectrumTexture tint) {
@@ -50,8 +50,8 @@ ConductorReflectance ConductorReflectance::from_normal_reflectance(SpectrumTextu
     return ConductorReflectance(Spectrum(1.0f), Spectrum(0.0f), std::move(normal_reflectance), true);
 }
 
-ConductorReflectance::AtPoint ConductorReflectance::at(const Vec2& uv) const {
-    const Spectrum reflectance = reflectance_->eval(uv);
+ConductorReflectance::AtPoint ConductorReflectance::at(const TextureLookup& lookup) const {
+    const Spectrum reflectance = reflectance_->eval(lookup);
     if (is_normal_reflectance_) return {index_for_normal_reflectance(reflectance), Spectrum(0.0f), Spectrum(1.0f)};
     return {eta_, k_, reflectance};
 }
@@ -73,8 +73,8 @@ Spectrum index_for_normal_reflectance(const Spectrum& r0) {
 
 // BOOK(conductor-material-bsdf)
 const BSDF* ConductorMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
-    const ConductorReflectance::AtPoint metal = reflectance_.at(hit.uv);
-    const TrowbridgeReitz distribution = roughness_.distribution(hit.uv);
+    const ConductorReflectance::AtPoint metal = reflectance_.at(hit.texture_lookup());
+    const TrowbridgeReitz distribution = roughness_.distribution(hit.texture_lookup());
     // A surface too smooth for the microfacet model to sample well is a mirror-like delta lobe.
     const BSDF* bsdf = nullptr;
     if (distribution.effectively_smooth())

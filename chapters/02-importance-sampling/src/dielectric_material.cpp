@@ -6,7 +6,7 @@
 namespace freezeray::ch02 {
 
 const BSDF* DielectricMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
-    const TrowbridgeReitz distribution = roughness_.distribution(hit.uv);
+    const TrowbridgeReitz distribution = roughness_.distribution(hit.texture_lookup());
     if (distribution.effectively_smooth()) return arena.make<SmoothDielectricBSDF>(eta_);
     return arena.make<RoughDielectricBSDF>(distribution, eta_);
 }

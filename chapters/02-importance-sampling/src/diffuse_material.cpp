@@ -6,7 +6,7 @@ namespace freezeray::ch02 {
 
 // BOOK(diffuse-material-bsdf)
 const BSDF* DiffuseMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
-    return arena.make<CosineLambertianBSDF>(albedo_->eval(hit.uv));
+    return arena.make<CosineLambertianBSDF>(albedo_->eval(hit.texture_lookup()));
 }
 // END BOOK
 

@@ -72,17 +72,20 @@ std::string canonical_name(const std::string& path) {
 }  // namespace
 
 std::shared_ptr<const TextureStorage> load_texture_storage(const std::string& path, TextureEncoding encoding,
-                                                           const Registry& registry, const std::string& layout) {
+                                                           const Registry& registry, const std::string& layout,
+                                                           const Parameters* settings) {
     // The cache holds weak pointers: a file stays in memory exactly as long as some texture
     // uses it, and a scene loaded later reads it afresh.
     static std::mutex mutex;
-    static std::map<std::tuple<std::string, TextureEncoding, std::string>, std::weak_ptr<const TextureStorage>> cache;
+    static std::map<std::tuple<std::string, TextureEncoding, std::string, std::string>,
+                    std::weak_ptr<const TextureStorage>>
+        cache;
 
-    const auto key = std::make_tuple(canonical_name(path), encoding, layout);
+    const auto key = std::make_tuple(canonical_name(path), encoding, layout, settings != nullptr ? settings->json().dump() : "");
     const std::lock_guard<std::mutex> lock(mutex);
     if (auto shared = cache[key].lock()) return shared;
     std::shared_ptr<const TextureStorage> storage =
-        registry.make_texture_storage(layout, read_texture_image(path, encoding), "texture layout");
+        registry.texture_storage_maker(layout, "texture layout", settings)(read_texture_image(path, encoding));
     cache[key] = storage;
     std::erase_if(cache, [](const auto& entry) { return entry.second.expired(); });
     return storage;

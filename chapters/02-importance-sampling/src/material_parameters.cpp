@@ -70,7 +70,7 @@ std::shared_ptr<const Texture<T>> read_image_texture(const Parameters& p, const 
 
     std::shared_ptr<const TextureStorage> storage;
     try {
-        storage = load_texture_storage(file, encoding, context.registry, layout);
+        storage = load_texture_storage(file, encoding, context.registry, layout, context.texture_settings);
     } catch (const InputError& e) {
         throw InputError(p.where(texture_key), e.what());  // the JSON path, then the file's own message
     }
@@ -120,8 +120,8 @@ TrowbridgeReitz MicrofacetRoughness::distribution(float roughness_u, float rough
     return TrowbridgeReitz(alpha_u, alpha_v);
 }
 
-TrowbridgeReitz MicrofacetRoughness::distribution(const Vec2& uv) const {
-    return distribution(roughness_u_->eval(uv), roughness_v_->eval(uv));
+TrowbridgeReitz MicrofacetRoughness::distribution(const TextureLookup& lookup) const {
+    return distribution(roughness_u_->eval(lookup), roughness_v_->eval(lookup));
 }
 
 std::uint32_t MicrofacetRoughness::lobe_flags() const {

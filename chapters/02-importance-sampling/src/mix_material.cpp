@@ -8,7 +8,7 @@ namespace freezeray::ch02 {
 // BOOK(mix-material-bsdf)
 const BSDF* MixMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
     // Both parts are built at the same point, in the same arena, and blended by the weight there.
-    return arena.make<MixBSDF>(first_->bsdf(hit, arena), second_->bsdf(hit, arena), weight_->eval(hit.uv));
+    return arena.make<MixBSDF>(first_->bsdf(hit, arena), second_->bsdf(hit, arena), weight_->eval(hit.texture_lookup()));
 }
 // END BOOK
 

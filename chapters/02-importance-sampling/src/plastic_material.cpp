@@ -5,8 +5,8 @@
 namespace freezeray::ch02 {
 
 const BSDF* PlasticMaterial::bsdf(const Hit& hit, ScratchArena& arena) const {
-    const Spectrum albedo = albedo_->eval(hit.uv);
-    const TrowbridgeReitz distribution = roughness_.distribution(hit.uv);
+    const Spectrum albedo = albedo_->eval(hit.texture_lookup());
+    const TrowbridgeReitz distribution = roughness_.distribution(hit.texture_lookup());
     // The BSDF keeps a pointer to its coating's distribution, so that lives in the arena too.
     const TrowbridgeReitz* coating =
         distribution.effectively_smooth() ? nullptr : arena.make<TrowbridgeReitz>(distribution);

@@ -69,7 +69,9 @@ void register_chapter02(Registry& registry) {
             return material;
         });
     registry.add_texture_layout("linear", 2, "rows of texels one after another, as the image file stores them",
-                                [](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); });
+                                [](const Parameters&) -> TextureStorageMaker {
+                                    return [](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); };
+                                });
     registry.add_integrator("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
                             [](const RenderSettings& settings, const Parameters&) {
                                 return std::make_unique<ch02::ImportanceSampledPathTracer>(settings.max_depth);

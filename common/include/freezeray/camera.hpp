@@ -31,11 +31,15 @@ public:
     // A: the area of the image rectangle at distance 1 from the pinhole (chapter 04's camera
     // importance is 1 / (A cos^4 theta)).
     float image_plane_area() const;
+    // The side of one pixel on the image plane at distance 1, at the image's centre: the angle
+    // (in radians, for small angles) one pixel spans there.
+    float pixel_spread() const { return 2.0f * tan_half_fov_y_ / static_cast<float>(height_); }
 
     int width() const { return width_; }
     int height() const { return height_; }
     const Vec3& position() const { return position_; }
     const Vec3& forward() const { return forward_; }
+    const Vec3& right() const { return right_; }
 
 private:
     Vec3 position_, forward_, right_, up_;

@@ -3,6 +3,7 @@
 
 #include "freezeray/math.hpp"
 #include "freezeray/ray.hpp"
+#include "freezeray/texture_storage.hpp"
 
 #include <cstdint>
 
@@ -15,10 +16,17 @@ struct Hit {
     Vec3 geometric_normal;  // unit, from the triangle's winding (counter-clockwise is front)
     Vec3 shading_normal;    // unit, interpolated vertex normal (or the geometric one)
     Vec2 uv;
+    // How uv changes from one pixel to the next, when the scene has a camera and textures (zero
+    // otherwise): Scene::intersect fills them in (texture_footprint.hpp).
+    Vec2 duv_dx{0.0f};
+    Vec2 duv_dy{0.0f};
     float b1 = 0.0f, b2 = 0.0f;   // barycentric coordinates of vertices 1 and 2
     std::uint32_t mesh = 0;       // index into Scene::meshes
     std::uint32_t triangle = 0;   // index into that mesh's triangles
     std::uint32_t material = 0;   // index into Scene::materials
+
+    // What a texture is looked up with at this hit.
+    TextureLookup texture_lookup() const { return TextureLookup{uv, duv_dx, duv_dy}; }
 
     // A ray leaving this hit in direction `d`, offset so that it cannot hit this triangle again.
     Ray spawn_ray(const Vec3& d) const {

@@ -25,10 +25,13 @@ namespace freezeray {
 class Registry;
 
 // What a material's factory needs besides its own parameters: the registry (to make texture
-// storage) and the layout the scene stores its image textures in.
+// storage), the layout the scene stores its image textures in and that layout's settings.
 struct MaterialContext {
     const Registry& registry;
     std::string texture_layout;  // a registered texture layout ("linear"; chapter 08 adds "tiled")
+    // The scene's "textures" block with the command line's texture options over it; null: the
+    // layouts' defaults.
+    const Parameters* texture_settings = nullptr;
 };
 
 // Each factory gets its capability's settings as Parameters: the scene's block (integrators: the
@@ -38,8 +41,10 @@ struct MaterialContext {
 using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const RenderSettings&, const Parameters& options)>;
 using MaterialFactory = std::function<std::unique_ptr<Material>(const Parameters&, const MaterialContext&)>;
 using AcceleratorFactory = std::function<std::unique_ptr<Accelerator>(const Parameters& options)>;
-// Stores a decoded image in a texture layout.
-using TextureLayoutFactory = std::function<std::shared_ptr<const TextureStorage>(const Image& image)>;
+// A texture layout reads its settings (chapter 08's filter and texel format) once, and gives back
+// what stores each decoded image in that layout.
+using TextureStorageMaker = std::function<std::shared_ptr<const TextureStorage>(const Image& image)>;
+using TextureLayoutFactory = std::function<TextureStorageMaker(const Parameters& settings)>;
 using LightFactory = std::function<std::unique_ptr<Light>(const Parameters&)>;
 // A sampler (chapter 09) with its settings: the scene's "render" block under the command line's.
 using SamplerFactory = std::function<std::unique_ptr<Sampler>(const Parameters& options)>;
@@ -115,6 +120,10 @@ public:
                                             const MaterialContext& context) const;
     std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const std::string& where,
                                                   const Parameters* options = nullptr) const;
+    // `settings` may be null: the layout's defaults. Settings are checked here (an InputError
+    // names the key), before any image is stored.
+    TextureStorageMaker texture_storage_maker(const std::string& layout, const std::string& where,
+                                              const Parameters* settings = nullptr) const;
     std::shared_ptr<const TextureStorage> make_texture_storage(const std::string& layout, const Image& image,
                                                                const std::string& where) const;
     std::unique_ptr<Light> make_light(const std::string& type, const Parameters& parameters) const;

@@ -9,6 +9,7 @@
 #include "freezeray/mesh.hpp"
 #include "freezeray/options.hpp"
 #include "freezeray/scene_effects.hpp"
+#include "freezeray/texture_footprint.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -62,8 +63,12 @@ public:
 
     // The closest hit along the ray, and whether anything blocks it. Surfaces whose alpha mask
     // cuts them out where the ray meets them are passed through (scene_intersection.cpp).
+    // The hit on a textured material carries the footprint of a pixel in texture space.
     std::optional<Hit> intersect(const Ray& ray) const {
-        return has_alpha_masks ? intersect_through_cutouts(ray) : accelerator->intersect(ray);
+        std::optional<Hit> hit = has_alpha_masks ? intersect_through_cutouts(ray) : accelerator->intersect(ray);
+        if (hit && effects.textures && camera && materials[hit->material]->is_textured())
+            add_texture_footprint(*hit, meshes[hit->mesh], *camera);
+        return hit;
     }
     bool occluded(const Ray& ray) const {
         return has_alpha_masks ? occluded_through_cutouts(ray) : accelerator->occluded(ray);

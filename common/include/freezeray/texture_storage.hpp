@@ -12,6 +12,16 @@ namespace freezeray {
 // stretch out, or it repeats mirrored so that neighbouring copies meet without a seam.
 enum class WrapMode { Repeat, Clamp, Mirror };
 
+// Where a texture is looked up: the texture coordinates of a point and, when they are known, how
+// they change from one pixel of the image to the next (d(u, v)/dx and d(u, v)/dy: the footprint of
+// a pixel in texture space, texture_footprint.hpp). Chapter 08 chooses a MIP level from them; zero
+// derivatives mean that nothing is known, and the texture is looked up at the point.
+struct TextureLookup {
+    Vec2 uv{0.0f};
+    Vec2 duv_dx{0.0f};
+    Vec2 duv_dy{0.0f};
+};
+
 // The texels of one image: width x height linear RGB values, (0, 0) at the top-left.
 class TextureStorage {
 public:
@@ -20,9 +30,10 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
 
-    // The filtered value at texture coordinates uv: one virtual call per lookup, inside which a
-    // layout reads its texels without further dispatch (chapter 02's bilinear_lookup<Layout>).
-    virtual Spectrum lookup(const Vec2& uv, WrapMode wrap) const = 0;
+    // The filtered value at lookup.uv: one virtual call per lookup, inside which a layout reads
+    // its texels without further dispatch (chapter 02's bilinear_lookup<Layout>). A layout
+    // without MIP levels (chapter 02's) ignores the footprint.
+    virtual Spectrum lookup(const TextureLookup& lookup, WrapMode wrap) const = 0;
 
     // The texel in column x, row y; requires 0 <= x < width and 0 <= y < height. For tests
     // and tools; lookups call the layout's own (inline) texel.

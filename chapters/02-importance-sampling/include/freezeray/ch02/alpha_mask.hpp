@@ -15,7 +15,7 @@ namespace freezeray::ch02 {
 class TextureAlphaMask final : public AlphaMask {
 public:
     explicit TextureAlphaMask(FloatTexture opacity) : opacity_(std::move(opacity)) {}
-    float opacity(const Vec2& uv) const override { return opacity_->eval(uv); }
+    float opacity(const Vec2& uv) const override { return opacity_->eval(TextureLookup{uv}); }
 
 private:
     FloatTexture opacity_;

@@ -4,6 +4,7 @@
 
 #include "freezeray/ch02/texture.hpp"
 #include "freezeray/ch02/texture_storage.hpp"
+#include "freezeray/parameters.hpp"
 
 #include <memory>
 #include <optional>
@@ -29,11 +30,13 @@ enum class TextureEncoding { SRGB, Linear };
 std::optional<TextureEncoding> texture_encoding_from_name(const std::string& name);  // "srgb", "linear"
 
 // The texels of the image file at `path`, read as `encoding` says and stored in `layout` (a
-// registered texture layout). Every file is read once per encoding and layout: later calls,
-// while some texture still uses it, share the storage. Throws InputError naming the file if it
-// cannot be read, or naming the layout if `registry` has none of that name.
+// registered texture layout) with its `settings` (null: its defaults). Every file is read once
+// per encoding, layout and settings: later calls, while some texture still uses it, share the
+// storage. Throws InputError naming the file if it cannot be read, or naming the layout if
+// `registry` has none of that name.
 std::shared_ptr<const TextureStorage> load_texture_storage(const std::string& path, TextureEncoding encoding,
-                                                           const Registry& registry, const std::string& layout);
+                                                           const Registry& registry, const std::string& layout,
+                                                           const Parameters* settings = nullptr);
 
 // A texture read from an image. A float texture takes the first (red) channel: data maps are
 // grey images, whose three channels are equal, and a luminance of data has no meaning.
@@ -45,7 +48,7 @@ public:
     ImageTexture(std::shared_ptr<const TextureStorage> storage, WrapMode wrap)
         : storage_(std::move(storage)), wrap_(wrap) {}
 
-    T eval(const Vec2& uv) const override { return channels_of(storage_->lookup(uv, wrap_)); }
+    T eval(const TextureLookup& lookup) const override { return channels_of(storage_->lookup(lookup, wrap_)); }
 
     T minimum() const override { return channels_of(storage_->minimum()); }
     T maximum() const override { return channels_of(storage_->maximum()); }

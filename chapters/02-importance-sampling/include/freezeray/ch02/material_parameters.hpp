@@ -37,8 +37,8 @@ class MicrofacetRoughness {
 public:
     MicrofacetRoughness(FloatTexture roughness_u, FloatTexture roughness_v, float anisotropy);
 
-    // The microfacet distribution at texture coordinates uv.
-    TrowbridgeReitz distribution(const Vec2& uv) const;
+    // The microfacet distribution where the roughness textures are looked up.
+    TrowbridgeReitz distribution(const TextureLookup& lookup) const;
 
     // The lobes this roughness can produce anywhere: BSDF_Glossy where the surface is rough,
     // BSDF_Specular where it is effectively smooth (the material then builds the smooth BSDF).

@@ -52,7 +52,7 @@ public:
         Spectrum k;
         Spectrum tint;  // multiplies the Fresnel reflectance; 1 when untinted
     };
-    AtPoint at(const Vec2& uv) const;
+    AtPoint at(const TextureLookup& lookup) const;
 
     bool is_textured() const { return !reflectance_->is_constant(); }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "freezeray/math.hpp"
+#include "freezeray/texture_storage.hpp"
 
 #include <memory>
 
@@ -14,8 +15,9 @@ class Texture {
 public:
     virtual ~Texture() = default;
 
-    // The value at texture coordinates uv; (0, 0) is the bottom-left corner of an image, as in OBJ.
-    virtual T eval(const Vec2& uv) const = 0;
+    // The value at texture coordinates lookup.uv, (0, 0) the bottom-left corner of an image as in
+    // OBJ, filtered over the pixel's footprint when the texture can (chapter 08's MIP maps).
+    virtual T eval(const TextureLookup& lookup) const = 0;
 
     // True when eval returns the same value everywhere (no texture fetch is ever needed).
     virtual bool is_constant() const { return false; }
@@ -33,7 +35,7 @@ class ConstantTexture final : public Texture<T> {
 public:
     explicit ConstantTexture(const T& value) : value_(value) {}
 
-    T eval(const Vec2& /*uv*/) const override { return value_; }
+    T eval(const TextureLookup& /*lookup*/) const override { return value_; }
     bool is_constant() const override { return true; }
     T minimum() const override { return value_; }
     T maximum() const override { return value_; }

@@ -80,7 +80,10 @@ public:
         return texels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width()) + static_cast<std::size_t>(x)];
     }
 
-    Spectrum lookup(const Vec2& uv, WrapMode wrap) const override { return bilinear_lookup(*this, uv, wrap); }
+    // Chapter 02 has no MIP levels: every lookup reads level 0 at the point, whatever the footprint.
+    Spectrum lookup(const TextureLookup& lookup, WrapMode wrap) const override {
+        return bilinear_lookup(*this, lookup.uv, wrap);
+    }
 
 private:
     std::vector<Spectrum> texels_;

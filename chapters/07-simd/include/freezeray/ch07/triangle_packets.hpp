@@ -2,27 +2,14 @@
 // structure of arrays (packet_ray.hpp), the last packet of a leaf padded.
 #pragma once
 
+#include "freezeray/cache_line_allocator.hpp"
 #include "freezeray/ch06/kdtree_node.hpp"
 
 #include <cstddef>
 #include <cstdint>
-#include <new>
 #include <vector>
 
 namespace freezeray::ch07 {
-
-// Memory aligned to a cache line (64 bytes): a packet of 16 lanes is then read with aligned loads
-// that never straddle two lines.
-template <typename T>
-struct CacheLineAllocator {
-    using value_type = T;
-    CacheLineAllocator() = default;
-    template <typename U>
-    CacheLineAllocator(const CacheLineAllocator<U>&) {}
-    T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64))); }
-    void deallocate(T* p, std::size_t) { ::operator delete(p, std::align_val_t(64)); }
-    bool operator==(const CacheLineAllocator&) const { return true; }
-};
 
 // Writes the triangles `leaf_triangles` (global indices into `vertices`, at most `width` of them)
 // into one packet: `coordinates` (9 width floats, see packet_floats) and `lanes` (width global

@@ -1,0 +1,60 @@
+// Texel formats: how one texel is kept in memory. Three 32-bit floats hold any value (12 bytes a
+// texel); an image read from an 8-bit file holds at most 256 values per channel, so one byte per
+// channel, decoded through a table on every lookup, holds it exactly in 4 bytes (the fourth is
+// padding, so that a texel never straddles two cache lines and a 4 x 4 tile fills one 64-byte line).
+#pragma once
+
+#include "freezeray/image.hpp"
+#include "freezeray/math.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace freezeray::ch08 {
+
+// 32-bit float channels: any value, 12 bytes a texel.
+struct FloatTexels {
+    struct Stored {
+        float rgb[3];
+    };
+    static constexpr const char* name = "float";
+
+    Stored encode(const Spectrum& value) const { return Stored{{value.r, value.g, value.b}}; }
+    Spectrum decode(const Stored& texel) const { return Spectrum(texel.rgb[0], texel.rgb[1], texel.rgb[2]); }
+};
+
+// What the 256 codes of a byte stand for, in increasing order.
+struct ByteDecoding {
+    const char* name;
+    std::array<float, 256> value;
+};
+
+// srgb_to_linear(c / 255): what read_image makes of an 8-bit colour file.
+const ByteDecoding& srgb_byte_decoding();
+// linear_to_srgb(srgb_to_linear(c / 255)): a data map (roughness, a mix weight) read from an
+// 8-bit file, after chapter 02's read_texture_image gave back its stored values.
+const ByteDecoding& data_byte_decoding();
+
+// The decoding whose table holds every channel of every texel of `image` exactly (bit for bit),
+// or null when neither does (a floating-point or 16-bit file): that image is kept in floats.
+const ByteDecoding* exact_byte_decoding(const Image& image);
+
+// One byte per channel and one of padding: 4 bytes a texel.
+struct ByteTexels {
+    struct Stored {
+        std::uint8_t code[4];
+    };
+    static constexpr const char* name = "8-bit";
+
+    const ByteDecoding* decoding;
+
+    // The nearest code per channel: exact for texels of the image the decoding was chosen for,
+    // rounded for the averages of its MIP levels.
+    Stored encode(const Spectrum& value) const;
+    Spectrum decode(const Stored& texel) const {
+        return Spectrum(decoding->value[texel.code[0]], decoding->value[texel.code[1]], decoding->value[texel.code[2]]);
+    }
+};
+
+}  // namespace freezeray::ch08

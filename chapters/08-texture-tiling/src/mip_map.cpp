@@ -1,0 +1,77 @@
+// Building MIP levels and choosing one.
+#include "freezeray/ch08/mip_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace freezeray::ch08 {
+
+namespace {
+
+// For each of the n' texels of the next level, along one axis: the texels below it and their
+// weights (the length of [i, i + 1) inside the texel's interval, divided by its length n / n').
+struct Taps {
+    int first = 0;
+    int count = 0;
+    double weight[3] = {0.0, 0.0, 0.0};
+};
+
+std::vector<Taps> box_taps(int n) {
+    const int next = std::max(1, n / 2);
+    std::vector<Taps> taps(static_cast<std::size_t>(next));
+    for (int i = 0; i < next; ++i) {
+        // The interval [a, b) in texels below, with exact integer arithmetic: a = i n / n'.
+        const double a = static_cast<double>(i) * n / next;
+        const double b = static_cast<double>(i + 1) * n / next;
+        Taps& t = taps[static_cast<std::size_t>(i)];
+        t.first = static_cast<int>(std::floor(a));
+        const int last = std::min(n - 1, static_cast<int>(std::ceil(b)) - 1);
+        t.count = last - t.first + 1;
+        for (int k = 0; k < t.count; ++k) {
+            const double lo = std::max(a, static_cast<double>(t.first + k));
+            const double hi = std::min(b, static_cast<double>(t.first + k + 1));
+            t.weight[k] = (hi - lo) / (b - a);
+        }
+    }
+    return taps;
+}
+
+}  // namespace
+
+// BOOK(next-mip-level)
+Image next_mip_level(const Image& level) {
+    const std::vector<Taps> across = box_taps(level.width());
+    const std::vector<Taps> down = box_taps(level.height());
+    Image next(static_cast<int>(across.size()), static_cast<int>(down.size()));
+    for (int y = 0; y < next.height(); ++y)
+        for (int x = 0; x < next.width(); ++x) {
+            const Taps& row = down[static_cast<std::size_t>(y)];
+            const Taps& column = across[static_cast<std::size_t>(x)];
+            glm::dvec3 sum(0.0);
+            for (int j = 0; j < row.count; ++j)
+                for (int i = 0; i < column.count; ++i)
+                    sum += row.weight[j] * column.weight[i] * glm::dvec3(level.at(column.first + i, row.first + j));
+            next.at(x, y) = Spectrum(sum);
+        }
+    return next;
+}
+// END BOOK
+
+std::vector<Image> build_mip_pyramid(const Image& image) {
+    std::vector<Image> levels{image};
+    while (levels.back().width() > 1 || levels.back().height() > 1) levels.push_back(next_mip_level(levels.back()));
+    return levels;
+}
+
+// BOOK(mip-level)
+float mip_level(const Vec2& duv_dx, const Vec2& duv_dy, int width, int height) {
+    // EXERCISE(ch08/mip-level): scale each step by the texture's size (u by width, v by height), take the longer step's length rho, and return log2(rho); return 0 when rho is not above 0
+    const Vec2 size(static_cast<float>(width), static_cast<float>(height));
+    const float rho = std::max(glm::length(duv_dx * size), glm::length(duv_dy * size));
+    if (!(rho > 0.0f)) return 0.0f;
+    return std::log2(rho);
+    // END EXERCISE
+}
+// END BOOK
+
+}  // namespace freezeray::ch08

@@ -1,0 +1,64 @@
+// The byte decodings, and choosing one that holds an image exactly.
+#include "freezeray/ch08/texel_format.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <iterator>
+
+namespace freezeray::ch08 {
+
+namespace {
+
+ByteDecoding make_decoding(const char* name, bool data) {
+    ByteDecoding decoding{name, {}};
+    for (int code = 0; code < 256; ++code) {
+        // The same expressions, in the same order, as image_io_png.cpp and chapter 02's
+        // read_texture_image: the same floats, bit for bit.
+        const float linear = srgb_to_linear(static_cast<float>(code) / 255.0f);
+        decoding.value[static_cast<std::size_t>(code)] = data ? linear_to_srgb(linear) : linear;
+    }
+    return decoding;
+}
+
+// The code whose value is nearest `x` (the lower of two equally near). The table increases.
+std::uint8_t nearest_code(const ByteDecoding& decoding, float x) {
+    const auto& table = decoding.value;
+    const auto above = std::lower_bound(table.begin(), table.end(), x);
+    if (above == table.begin()) return 0;
+    if (above == table.end()) return 255;
+    const auto below = std::prev(above);
+    return static_cast<std::uint8_t>((x - *below <= *above - x ? below : above) - table.begin());
+}
+
+bool holds_exactly(const ByteDecoding& decoding, const Image& image) {
+    for (const Spectrum& texel : image.pixels())
+        for (int c = 0; c < 3; ++c)
+            if (std::bit_cast<std::uint32_t>(decoding.value[nearest_code(decoding, texel[c])]) !=
+                std::bit_cast<std::uint32_t>(texel[c]))
+                return false;
+    return true;
+}
+
+}  // namespace
+
+const ByteDecoding& srgb_byte_decoding() {
+    static const ByteDecoding decoding = make_decoding("sRGB", false);
+    return decoding;
+}
+
+const ByteDecoding& data_byte_decoding() {
+    static const ByteDecoding decoding = make_decoding("data", true);
+    return decoding;
+}
+
+const ByteDecoding* exact_byte_decoding(const Image& image) {
+    for (const ByteDecoding* decoding : {&srgb_byte_decoding(), &data_byte_decoding()})
+        if (holds_exactly(*decoding, image)) return decoding;
+    return nullptr;
+}
+
+ByteTexels::Stored ByteTexels::encode(const Spectrum& value) const {
+    return Stored{{nearest_code(*decoding, value.r), nearest_code(*decoding, value.g), nearest_code(*decoding, value.b), 0}};
+}
+
+}  // namespace freezeray::ch08
