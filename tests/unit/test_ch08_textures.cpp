@@ -147,15 +147,23 @@ TEST_CASE("ch08: tiled storage returns the texels of linear storage at every lev
                 const MipMappedTexture& b = as_mip_mapped(tiled);
                 REQUIRE(a.level_count() == b.level_count());
                 CHECK(a.level_count() == 1 + static_cast<int>(std::floor(std::log2(std::max(width, height)))));
-                bool identical = true;
+                // In floats, the levels are build_mip_pyramid's exactly.
+                const std::vector<Image> pyramid = build_mip_pyramid(image);
+                REQUIRE(static_cast<int>(pyramid.size()) == a.level_count());
+                bool identical = true, as_pyramid = true;
                 for (int level = 0; level < a.level_count(); ++level) {
                     REQUIRE(a.level_width(level) == b.level_width(level));
                     REQUIRE(a.level_height(level) == b.level_height(level));
+                    REQUIRE(a.level_width(level) == pyramid[static_cast<std::size_t>(level)].width());
                     for (int y = 0; y < a.level_height(level); ++y)
-                        for (int x = 0; x < a.level_width(level); ++x)
+                        for (int x = 0; x < a.level_width(level); ++x) {
                             identical = identical && same_bits(a.level_texel(level, x, y), b.level_texel(level, x, y));
+                            as_pyramid = as_pyramid && (from_bytes || same_bits(a.level_texel(level, x, y),
+                                                                                pyramid[static_cast<std::size_t>(level)].at(x, y)));
+                        }
                 }
                 CHECK(identical);
+                CHECK(as_pyramid);
                 CHECK(b.memory_bytes() >= a.memory_bytes());  // tiles pad, rows do not
             }
 }

@@ -43,6 +43,17 @@ Image next_mip_level(const Image& level) {
     const std::vector<Taps> across = box_taps(level.width());
     const std::vector<Taps> down = box_taps(level.height());
     Image next(static_cast<int>(across.size()), static_cast<int>(down.size()));
+    if (level.width() % 2 == 0 && level.height() % 2 == 0) {
+        // Even sizes: each texel is the mean of two by two (the same sum as below, which would
+        // weight each of the four by 1/4 exactly; this is only quicker).
+        for (int y = 0; y < next.height(); ++y)
+            for (int x = 0; x < next.width(); ++x) {
+                const glm::dvec3 sum = glm::dvec3(level.at(2 * x, 2 * y)) + glm::dvec3(level.at(2 * x + 1, 2 * y)) +
+                                       glm::dvec3(level.at(2 * x, 2 * y + 1)) + glm::dvec3(level.at(2 * x + 1, 2 * y + 1));
+                next.at(x, y) = Spectrum(0.25 * sum);
+            }
+        return next;
+    }
     for (int y = 0; y < next.height(); ++y)
         for (int x = 0; x < next.width(); ++x) {
             const Taps& row = down[static_cast<std::size_t>(y)];

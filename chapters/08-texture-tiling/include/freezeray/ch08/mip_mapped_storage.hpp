@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ public:
     virtual Spectrum level_texel(int level, int x, int y) const = 0;
     // The bilinearly filtered value of one level at uv (what a trilinear lookup blends).
     virtual Spectrum level_lookup(int level, const Vec2& uv, WrapMode wrap) const = 0;
+    // A lookup that also appends the cache line (address / 64) of every texel it reads to `lines`.
+    virtual Spectrum lookup_recording_lines(const TextureLookup& lookup, WrapMode wrap,
+                                            std::vector<std::uintptr_t>& lines) const = 0;
     // Texels of every level, padding included.
     virtual std::size_t memory_bytes() const = 0;
     // "tiled (4 x 4), 8-bit sRGB, 12 levels"
@@ -71,16 +75,57 @@ private:
     std::vector<typename Format::Stored, CacheLineAllocator<typename Format::Stored>> texels_;
 };
 
+// The trilinear filter over any levels: level_at(k) gives what chapter 02's bilinear_lookup reads
+// for level k (a TexelLevel, or a view of it that records the memory it touches).
+// BOOK(trilinear-lookup)
+template <typename LevelAt>
+Spectrum trilinear_lookup(const TextureLookup& lookup, WrapMode wrap, int width, int height, int level_count,
+                          const LevelAt& level_at) {
+    const int last = level_count - 1;
+    const float level = mip_level(lookup.duv_dx, lookup.duv_dy, width, height);
+    // Magnified, a point, or no MIP levels: level 0, as chapter 02 (a NaN level lands here too).
+    if (!(level > 0.0f) || last == 0) return ch02::bilinear_lookup(level_at(0), lookup.uv, wrap);
+    if (level >= static_cast<float>(last)) return ch02::bilinear_lookup(level_at(last), lookup.uv, wrap);
+    const int below = static_cast<int>(level);
+    const float t = level - static_cast<float>(below);  // how far towards the coarser level
+    const Spectrum fine = ch02::bilinear_lookup(level_at(below), lookup.uv, wrap);
+    if (t == 0.0f) return fine;
+    const Spectrum coarse = ch02::bilinear_lookup(level_at(below + 1), lookup.uv, wrap);
+    return (1.0f - t) * fine + t * coarse;
+}
+// END BOOK
+
+// A level that notes the cache line of every texel read from it (for texture-benchmark's cache
+// model and access maps), and returns the level's texel.
+template <typename Level>
+struct LineRecorder {
+    const Level& level;
+    std::vector<std::uintptr_t>& lines;
+    int width() const { return level.width(); }
+    int height() const { return level.height(); }
+    Spectrum texel(int x, int y) const {
+        lines.push_back(reinterpret_cast<std::uintptr_t>(level.address(x, y)) / CacheLineBytes);
+        return level.texel(x, y);
+    }
+};
+
 template <typename Addressing, typename Format>
 class MipMappedStorage final : public MipMappedTexture {
 public:
     // With the trilinear filter, every level of the pyramid; with the bilinear one, level 0 only.
     MipMappedStorage(const Image& image, const Format& format, TextureFilter filter)
         : MipMappedTexture(image, filter), format_(format) {
-        if (filter == TextureFilter::Trilinear) {
-            for (const Image& level : build_mip_pyramid(image)) levels_.emplace_back(level, format);
-        } else {
-            levels_.emplace_back(image, format);
+        // Each level is encoded as soon as it is made, and only the one below the next is kept in
+        // floats: an 8192^2 texture needs its 768 MiB image and 192 MiB more, not the whole
+        // pyramid in floats.
+        levels_.emplace_back(image, format);
+        if (filter == TextureFilter::Trilinear && (image.width() > 1 || image.height() > 1)) {
+            Image level = next_mip_level(image);
+            for (;;) {
+                levels_.emplace_back(level, format);
+                if (level.width() == 1 && level.height() == 1) break;
+                level = next_mip_level(level);
+            }
         }
         for (const auto& level : levels_) sizes_.emplace_back(level.width(), level.height());
     }
@@ -94,21 +139,17 @@ public:
     }
     const TexelLevel<Addressing, Format>& level(int level) const { return levels_[static_cast<std::size_t>(level)]; }
 
-    // BOOK(trilinear-lookup)
     Spectrum lookup(const TextureLookup& lookup, WrapMode wrap) const override {
-        const int last = static_cast<int>(levels_.size()) - 1;
-        const float level = mip_level(lookup.duv_dx, lookup.duv_dy, width(), height());
-        // Magnified, a point, or no MIP levels: level 0, as chapter 02 (a NaN level lands here too).
-        if (!(level > 0.0f) || last == 0) return ch02::bilinear_lookup(levels_.front(), lookup.uv, wrap);
-        if (level >= static_cast<float>(last)) return ch02::bilinear_lookup(levels_.back(), lookup.uv, wrap);
-        const int below = static_cast<int>(level);
-        const float t = level - static_cast<float>(below);  // how far towards the coarser level
-        const Spectrum fine = ch02::bilinear_lookup(levels_[static_cast<std::size_t>(below)], lookup.uv, wrap);
-        if (t == 0.0f) return fine;
-        const Spectrum coarse = ch02::bilinear_lookup(levels_[static_cast<std::size_t>(below) + 1], lookup.uv, wrap);
-        return (1.0f - t) * fine + t * coarse;
+        return trilinear_lookup(lookup, wrap, width(), height(), static_cast<int>(levels_.size()),
+                                [this](int level) -> const auto& { return levels_[static_cast<std::size_t>(level)]; });
     }
-    // END BOOK
+
+    Spectrum lookup_recording_lines(const TextureLookup& lookup, WrapMode wrap,
+                                    std::vector<std::uintptr_t>& lines) const override {
+        return trilinear_lookup(lookup, wrap, width(), height(), static_cast<int>(levels_.size()), [&](int level) {
+            return LineRecorder<TexelLevel<Addressing, Format>>{levels_[static_cast<std::size_t>(level)], lines};
+        });
+    }
 
     std::size_t memory_bytes() const override {
         std::size_t bytes = 0;
