@@ -13,6 +13,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <iomanip>
+#include <map>
 #include <cstdio>
 #include <set>
 #include <filesystem>
@@ -66,7 +68,17 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     std::cout << "suggested:  " << (suggestion.name.empty() ? "none: " + suggestion.reason
                                                              : suggestion.name + " (" + suggestion.reason + ")")
               << "\n";
-    if (!scene.texture_layout.empty()) std::cout << "textures:   stored in the " << scene.texture_layout << " layout\n";
+    if (!scene.texture_layout.empty()) {
+        const std::size_t bytes = scene.texture_memory_bytes();
+        std::cout << "textures:   stored in the " << scene.texture_layout << " layout: " << scene.textures.size()
+                  << (scene.textures.size() == 1 ? " image, " : " images, ") << std::fixed << std::setprecision(1)
+                  << static_cast<double>(bytes) / (1024.0 * 1024.0) << " MiB\n";
+        std::cout.unsetf(std::ios::fixed);
+        std::map<std::string, int> kinds;  // how many images are stored each way
+        for (const auto& texture : scene.textures) ++kinds[texture->description()];
+        for (const auto& [description, count] : kinds)
+            std::cout << "  " << count << (count == 1 ? " image: " : " images: ") << description << "\n";
+    }
     return 0;
 }
 

@@ -247,6 +247,12 @@ std::shared_ptr<const TextureStorage> Registry::make_texture_storage(const std::
     return texture_storage_maker(layout, where)(image);
 }
 
+bool Registry::texture_layouts_use_footprint(const Parameters* settings) const {
+    for (const auto& [name, layout] : texture_layouts_)
+        if (layout.second(settings != nullptr ? *settings : no_parameters()).uses_footprint) return true;
+    return false;
+}
+
 std::unique_ptr<Light> Registry::make_light(const std::string& type, const Parameters& parameters) const {
     const auto it = lights_.find(type);
     if (it == lights_.end()) unknown(CapabilityKind::Light, type, parameters.where("type"));

@@ -140,6 +140,12 @@ int run_render(const RenderOptions& options, const Registry& registry) {
         for (const auto& [name, value] : scene.accelerator->describe())
             accelerator += (accelerator.empty() ? "" : "; ") + name + " " + value;
         std::cerr << "accelerator: " << scene.accelerator_name << (accelerator.empty() ? "" : ": " + accelerator) << "\n";
+        if (!scene.textures.empty()) {
+            char memory[32];
+            std::snprintf(memory, sizeof memory, "%.1f MiB", static_cast<double>(scene.texture_memory_bytes()) / (1024.0 * 1024.0));
+            std::cerr << "textures: " << scene.textures.size() << (scene.textures.size() == 1 ? " image" : " images")
+                      << " in the " << scene.texture_layout << " layout, " << memory << "\n";
+        }
     }
 
     RenderSettings settings;

@@ -247,7 +247,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     if (!scene.texture_layout.empty())
         registry.texture_storage_maker(scene.texture_layout, texture_settings.where("layout"), &texture_settings);
     for (std::string& w : texture_settings.unused_key_warnings()) scene.warnings.push_back(std::move(w));
-    const MaterialContext material_context{registry, scene.texture_layout, &texture_settings};
+    const MaterialContext material_context{registry, scene.texture_layout, &texture_settings, &scene.textures};
 
     // Material overrides by name: {"name": {...}}; with a "type" they replace the MTL
     // material, without one they change some of its parameters.
@@ -390,6 +390,8 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     scene.has_alpha_masks = std::any_of(scene.materials.begin(), scene.materials.end(),
                                         [](const std::unique_ptr<Material>& m) { return m->alpha_mask != nullptr; });
     scene.effects = compute_scene_effects(scene);
+    scene.texture_footprints =
+        scene.effects.textures && scene.camera && registry.texture_layouts_use_footprint(&texture_settings);
     return scene;
 }
 

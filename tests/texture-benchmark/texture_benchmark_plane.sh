@@ -11,7 +11,7 @@ mkdir -p "$out/texture-plane"
 cp "$repository/scenes/texture-plane/scene.json" "$repository/scenes/texture-plane/make_scene.py" "$out/texture-plane/"
 [ -f "$out/texture-plane/ground.png" ] || (cd "$out/texture-plane" && python3 make_scene.py)
 configs=linear/bilinear,tiled/bilinear,linear/trilinear,tiled/trilinear
-"$benchmark" "$out/texture-plane/scene.json" "$out/texture-plane/ground.png" --spp 4 --reps 5 --configs "$configs" --json \
+"$benchmark" "$out/texture-plane/scene.json" --spp 4 --reps 5 --configs "$configs" --json \
     > "$out/texture-benchmark-plane.jsonl.part"
 mv "$out/texture-benchmark-plane.jsonl.part" "$out/texture-benchmark-plane.jsonl"
 cat "$out/texture-benchmark-plane.jsonl"

@@ -6,7 +6,14 @@
 #include "determinism.hpp"
 #include "test_scenes.hpp"
 
+#include "freezeray/ch01/register_chapter01.hpp"
+#include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/ch02/texture_storage.hpp"
+#include "freezeray/ch03/register_chapter03.hpp"
+#include "freezeray/ch04/register_chapter04.hpp"
+#include "freezeray/ch05/register_chapter05.hpp"
+#include "freezeray/ch06/register_chapter06.hpp"
+#include "freezeray/ch07/register_chapter07.hpp"
 #include "freezeray/ch08/mip_map.hpp"
 #include "freezeray/ch08/mip_mapped_storage.hpp"
 #include "freezeray/ch08/texel_addressing.hpp"
@@ -14,6 +21,7 @@
 #include "freezeray/ch08/texture_layout_settings.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/random.hpp"
+#include "freezeray/scene.hpp"
 #include "freezeray/texture_footprint.hpp"
 
 #include <catch2/catch.hpp>
@@ -78,24 +86,29 @@ TEST_CASE("ch08: tiled_index gives every texel its own place inside the padded t
 }
 
 TEST_CASE("ch08: 8-bit texels hold an image from an 8-bit file exactly; others are kept in floats", "[unit][ch08]") {
+    TextureLayoutSettings settings;
+    settings.filter = TextureFilter::Bilinear;
+    auto description = [&](const Image& image) { return as_mip_mapped(make_tiled_storage(image, settings)).description(); };
     const Image bytes = random_image(9, 5, true, 3);
-    CHECK(exact_byte_decoding(bytes) == &srgb_byte_decoding());
+    CHECK(description(bytes) == "tiled (4 x 4), 8-bit sRGB, 1 level");
     Image data(2, 1);
     data.at(0, 0) = Spectrum(data_byte_decoding().value[17]);
     data.at(1, 0) = Spectrum(data_byte_decoding().value[200]);
-    CHECK(exact_byte_decoding(data) == &data_byte_decoding());
+    CHECK(description(data) == "tiled (4 x 4), 8-bit data, 1 level");
     Image floats = bytes;
-    floats.at(4, 2).g = std::nextafter(floats.at(4, 2).g, 2.0f);  // one value no byte decodes to
-    CHECK(exact_byte_decoding(floats) == nullptr);
+    floats.at(4, 2).g = std::nextafter(floats.at(4, 2).g, 2.0f);  // one value no byte decodes to (the last texel but four)
+    CHECK(description(floats) == "tiled (4 x 4), float, 1 level");
 
-    TextureLayoutSettings settings;
-    settings.filter = TextureFilter::Bilinear;
     const auto stored = make_row_major_storage(bytes, settings);
     const MipMappedTexture& texture = as_mip_mapped(stored);
     CHECK(texture.memory_bytes() == 4u * 9u * 5u);
     for (int y = 0; y < 5; ++y)
         for (int x = 0; x < 9; ++x) CHECK(same_bits(texture.texel(x, y), bytes.at(x, y)));
-    CHECK(as_mip_mapped(make_row_major_storage(floats, settings)).memory_bytes() == 12u * 9u * 5u);
+    const auto stored_floats = make_row_major_storage(floats, settings);
+    const MipMappedTexture& in_floats = as_mip_mapped(stored_floats);
+    CHECK(in_floats.memory_bytes() == 12u * 9u * 5u);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 9; ++x) CHECK(same_bits(in_floats.texel(x, y), floats.at(x, y)));
 }
 
 TEST_CASE("ch08: a MIP level is the exact box average of the level below, for any size", "[unit][ch08]") {
@@ -277,6 +290,46 @@ TEST_CASE("ch08: the footprint of a pixel on a square seen head on is the pixel'
     hit.geometric_normal = Vec3(1.0f, 0.0f, 0.0f);
     add_texture_footprint(hit, mesh, camera);
     CHECK(hit.duv_dx == Vec2(1.0f));
+}
+
+TEST_CASE("ch08: hits carry the footprint only when a texture layout filters by it", "[unit][ch08]") {
+    // material-spheres' floor is textured; its camera's central ray meets a sphere or the floor,
+    // so look down a column of the image for the first textured hit.
+    auto first_textured_hit = [](const Scene& scene) -> std::optional<Hit> {
+        const PinholeCamera& camera = *scene.camera;
+        for (int y = camera.height() - 1; y >= 0; --y) {
+            const std::optional<Hit> hit = scene.intersect(camera.generate_ray(Vec2(camera.width() / 2 + 0.5f, y + 0.5f)));
+            if (hit && scene.material(*hit).is_textured()) return hit;
+        }
+        return std::nullopt;
+    };
+    const std::string path = scene_path("material-spheres/scene.json");
+    // The complete renderer's default: trilinear, which reads the footprint.
+    const Scene trilinear = load_scene(path, full_registry());
+    REQUIRE(trilinear.texture_footprints);
+    const std::optional<Hit> with = first_textured_hit(trilinear);
+    REQUIRE(with);
+    CHECK(glm::length(with->duv_dx) > 0.0f);
+    // The bilinear filter, and chapter 07's renderer (chapter 02's layout): no footprint, and
+    // the same hit otherwise.
+    SceneLoadOptions bilinear_options;
+    bilinear_options.options.values["filter"] = "bilinear";
+    Registry chapter07("ch07", 7);
+    register_chapter01(chapter07);
+    register_chapter02(chapter07);
+    register_chapter03(chapter07);
+    register_chapter04(chapter07);
+    register_chapter05(chapter07);
+    register_chapter06(chapter07);
+    register_chapter07(chapter07);
+    for (const Scene& scene : {load_scene(path, full_registry(), bilinear_options), load_scene(path, chapter07)}) {
+        CHECK_FALSE(scene.texture_footprints);
+        const std::optional<Hit> without = first_textured_hit(scene);
+        REQUIRE(without);
+        CHECK(without->duv_dx == Vec2(0.0f));
+        CHECK(without->duv_dy == Vec2(0.0f));
+        CHECK(without->position == with->position);
+    }
 }
 
 TEST_CASE("ch08: images are the same, bit for bit, in the linear and the tiled layout", "[unit][ch08]") {

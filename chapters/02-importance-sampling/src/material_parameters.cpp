@@ -5,6 +5,7 @@
 #include "freezeray/error.hpp"
 #include "freezeray/registry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -74,6 +75,9 @@ std::shared_ptr<const Texture<T>> read_image_texture(const Parameters& p, const 
     } catch (const InputError& e) {
         throw InputError(p.where(texture_key), e.what());  // the JSON path, then the file's own message
     }
+    if (context.loaded_textures != nullptr &&
+        std::find(context.loaded_textures->begin(), context.loaded_textures->end(), storage) == context.loaded_textures->end())
+        context.loaded_textures->push_back(storage);
     auto texture = std::make_shared<ImageTexture<T>>(std::move(storage), wrap);
     check_texture_range(p.where(texture_key), Spectrum(texture->minimum()), Spectrum(texture->maximum()),
                         std::is_same_v<T, float> ? 1 : 3, min, max);

@@ -70,7 +70,8 @@ void register_chapter02(Registry& registry) {
         });
     registry.add_texture_layout("linear", 2, "rows of texels one after another, as the image file stores them",
                                 [](const Parameters&) -> TextureStorageMaker {
-                                    return [](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); };
+                                    return {[](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); },
+                                            false};
                                 });
     registry.add_integrator("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
                             [](const RenderSettings& settings, const Parameters&) {

@@ -28,8 +28,10 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(ROOT / "chapters" / "06-kd-tree" / "benchmark"))
-# Chapter 06's figure helpers: finding the benchmark, running it, drawing an SVG plot.
-from kdtree_figures import ray_benchmark, run_json, shared_scenes, svg_plot  # noqa: E402
+sys.path.insert(0, str(ROOT / "tools"))
+# Chapter 06's figure helpers: finding the benchmark and running it; the book's SVG plots.
+from kdtree_figures import ray_benchmark, run_json, shared_scenes  # noqa: E402
+from svg_plot import svg_plot  # noqa: E402
 
 KINDS = {"primary": "#2980b9", "diffuse": "#c0392b", "shadow": "#27ae60"}
 

@@ -68,9 +68,19 @@ Image next_mip_level(const Image& level) {
 }
 // END BOOK
 
+void for_each_mip_level(const Image& image, const std::function<void(const Image& level)>& visit) {
+    if (image.width() == 1 && image.height() == 1) return;
+    Image level = next_mip_level(image);
+    for (;;) {
+        visit(level);
+        if (level.width() == 1 && level.height() == 1) return;
+        level = next_mip_level(level);
+    }
+}
+
 std::vector<Image> build_mip_pyramid(const Image& image) {
     std::vector<Image> levels{image};
-    while (levels.back().width() > 1 || levels.back().height() > 1) levels.push_back(next_mip_level(levels.back()));
+    for_each_mip_level(image, [&](const Image& level) { levels.push_back(level); });
     return levels;
 }
 

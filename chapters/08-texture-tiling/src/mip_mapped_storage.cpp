@@ -15,9 +15,11 @@ namespace {
 template <typename Addressing>
 std::shared_ptr<const TextureStorage> make_storage(const Image& image, const TextureLayoutSettings& settings) {
     if (settings.format == TexelFormatChoice::Auto)
-        if (const ByteDecoding* decoding = exact_byte_decoding(image))
-            return std::make_shared<MipMappedStorage<Addressing, ByteTexels>>(image, ByteTexels{decoding}, settings.filter);
-    return std::make_shared<MipMappedStorage<Addressing, FloatTexels>>(image, FloatTexels{}, settings.filter);
+        for (const ByteDecoding* decoding : byte_decodings())
+            if (auto level0 = TexelLevel<Addressing, ByteTexels>::encode_exactly(image, ByteTexels{decoding}))
+                return std::make_shared<MipMappedStorage<Addressing, ByteTexels>>(image, std::move(*level0), settings.filter);
+    return std::make_shared<MipMappedStorage<Addressing, FloatTexels>>(
+        image, TexelLevel<Addressing, FloatTexels>(image, FloatTexels{}), settings.filter);
 }
 
 }  // namespace

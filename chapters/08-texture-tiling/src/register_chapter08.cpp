@@ -7,21 +7,29 @@
 
 namespace freezeray {
 
+namespace {
+
+// A layout of this chapter: its settings read once, then `make` for every image.
+using MakeStorage = std::shared_ptr<const TextureStorage> (*)(const Image&, const ch08::TextureLayoutSettings&);
+TextureLayoutFactory layout_factory(MakeStorage make) {
+    return [make](const Parameters& parameters) -> TextureStorageMaker {
+        const ch08::TextureLayoutSettings settings = ch08::read_texture_layout_settings(parameters);
+        return {[make, settings](const Image& image) { return make(image, settings); },
+                settings.filter == ch08::TextureFilter::Trilinear};
+    };
+}
+
+}  // namespace
+
 void register_chapter08(Registry& registry) {
     registry.add_texture_layout("linear", 8,
                                 "rows of texels one after another, as the image file stores them, with MIP levels "
                                 "and 8-bit texels where the file had them",
-                                [](const Parameters& parameters) -> TextureStorageMaker {
-                                    const ch08::TextureLayoutSettings settings = ch08::read_texture_layout_settings(parameters);
-                                    return [settings](const Image& image) { return ch08::make_row_major_storage(image, settings); };
-                                });
+                                layout_factory(ch08::make_row_major_storage));
     registry.add_texture_layout("tiled", 8,
                                 "square tiles of texels (4 x 4 by default) that keep neighbours in one cache line, "
                                 "with MIP levels and 8-bit texels where the file had them",
-                                [](const Parameters& parameters) -> TextureStorageMaker {
-                                    const ch08::TextureLayoutSettings settings = ch08::read_texture_layout_settings(parameters);
-                                    return [settings](const Image& image) { return ch08::make_tiled_storage(image, settings); };
-                                });
+                                layout_factory(ch08::make_tiled_storage));
     registry.set_default_texture_layout("tiled");
     registry.add_option({"--texture-layout", "layout", OptionType::Text, OptionTarget::Textures,
                          "how image textures are stored: linear or tiled (default: the scene's \"textures\" "

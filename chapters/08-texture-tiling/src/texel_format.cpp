@@ -30,15 +30,6 @@ std::uint8_t nearest_code(const ByteDecoding& decoding, float x) {
     return static_cast<std::uint8_t>((x - *below <= *above - x ? below : above) - table.begin());
 }
 
-bool holds_exactly(const ByteDecoding& decoding, const Image& image) {
-    for (const Spectrum& texel : image.pixels())
-        for (int c = 0; c < 3; ++c)
-            if (std::bit_cast<std::uint32_t>(decoding.value[nearest_code(decoding, texel[c])]) !=
-                std::bit_cast<std::uint32_t>(texel[c]))
-                return false;
-    return true;
-}
-
 }  // namespace
 
 const ByteDecoding& srgb_byte_decoding() {
@@ -51,14 +42,18 @@ const ByteDecoding& data_byte_decoding() {
     return decoding;
 }
 
-const ByteDecoding* exact_byte_decoding(const Image& image) {
-    for (const ByteDecoding* decoding : {&srgb_byte_decoding(), &data_byte_decoding()})
-        if (holds_exactly(*decoding, image)) return decoding;
-    return nullptr;
-}
+std::array<const ByteDecoding*, 2> byte_decodings() { return {&srgb_byte_decoding(), &data_byte_decoding()}; }
 
 ByteTexels::Stored ByteTexels::encode(const Spectrum& value) const {
     return Stored{{nearest_code(*decoding, value.r), nearest_code(*decoding, value.g), nearest_code(*decoding, value.b), 0}};
+}
+
+std::optional<ByteTexels::Stored> ByteTexels::encode_exactly(const Spectrum& value) const {
+    const Stored stored = encode(value);
+    for (int c = 0; c < 3; ++c)
+        if (std::bit_cast<std::uint32_t>(decoding->value[stored.code[c]]) != std::bit_cast<std::uint32_t>(value[c]))
+            return std::nullopt;
+    return stored;
 }
 
 }  // namespace freezeray::ch08

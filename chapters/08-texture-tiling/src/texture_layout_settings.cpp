@@ -20,8 +20,7 @@ TextureLayoutSettings read_texture_layout_settings(const Parameters& parameters)
         throw InputError(parameters.where("texel_format"), "unknown texel format '" + format + "'; valid: auto, float");
     }
     settings.tile_size = parameters.get_int("tile_size", settings.tile_size);
-    if (settings.tile_size != 2 && settings.tile_size != 4 && settings.tile_size != 8 && settings.tile_size != 16 &&
-        settings.tile_size != 32)
+    if (!is_valid_tile_size(settings.tile_size))
         throw InputError(parameters.where("tile_size"),
                          "a tile is 2, 4, 8, 16 or 32 texels on a side, not " + std::to_string(settings.tile_size));
     return settings;

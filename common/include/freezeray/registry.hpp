@@ -32,6 +32,8 @@ struct MaterialContext {
     // The scene's "textures" block with the command line's texture options over it; null: the
     // layouts' defaults.
     const Parameters* texture_settings = nullptr;
+    // Where each image texture the materials load is noted once (Scene::textures); may be null.
+    std::vector<std::shared_ptr<const TextureStorage>>* loaded_textures = nullptr;
 };
 
 // Each factory gets its capability's settings as Parameters: the scene's block (integrators: the
@@ -42,8 +44,13 @@ using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const Render
 using MaterialFactory = std::function<std::unique_ptr<Material>(const Parameters&, const MaterialContext&)>;
 using AcceleratorFactory = std::function<std::unique_ptr<Accelerator>(const Parameters& options)>;
 // A texture layout reads its settings (chapter 08's filter and texel format) once, and gives back
-// what stores each decoded image in that layout.
-using TextureStorageMaker = std::function<std::shared_ptr<const TextureStorage>(const Image& image)>;
+// what stores each decoded image in that layout, and whether its lookups read a pixel's
+// footprint (TextureLookup's derivatives): Scene::intersect computes footprints only then.
+struct TextureStorageMaker {
+    std::function<std::shared_ptr<const TextureStorage>(const Image& image)> make;
+    bool uses_footprint = false;  // chapter 08's trilinear filter; chapter 02's layout looks up at the point
+    std::shared_ptr<const TextureStorage> operator()(const Image& image) const { return make(image); }
+};
 using TextureLayoutFactory = std::function<TextureStorageMaker(const Parameters& settings)>;
 using LightFactory = std::function<std::unique_ptr<Light>(const Parameters&)>;
 // A sampler (chapter 09) with its settings: the scene's "render" block under the command line's.
@@ -126,6 +133,9 @@ public:
                                               const Parameters* settings = nullptr) const;
     std::shared_ptr<const TextureStorage> make_texture_storage(const std::string& layout, const Image& image,
                                                                const std::string& where) const;
+    // Whether some registered layout, with these settings, reads the pixel's footprint. A scene's
+    // textures may each name their own layout, so a scene needs footprints when any layout may.
+    bool texture_layouts_use_footprint(const Parameters* settings) const;
     std::unique_ptr<Light> make_light(const std::string& type, const Parameters& parameters) const;
     std::unique_ptr<Sampler> make_sampler(const std::string& name, const std::string& where,
                                           const Parameters* options = nullptr) const;

@@ -10,6 +10,7 @@
 #include "freezeray/options.hpp"
 #include "freezeray/scene_effects.hpp"
 #include "freezeray/texture_footprint.hpp"
+#include "freezeray/texture_storage.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -56,6 +57,13 @@ public:
     std::unique_ptr<Accelerator> accelerator;
     std::string accelerator_name;               // the registered accelerator it was built with
     std::string texture_layout;                 // the layout its image textures are stored in (may be empty)
+    // Every image texture its materials use (each file and encoding once), for `info`.
+    std::vector<std::shared_ptr<const TextureStorage>> textures;
+    std::size_t texture_memory_bytes() const {
+        std::size_t bytes = 0;
+        for (const auto& texture : textures) bytes += texture->memory_bytes();
+        return bytes;
+    }
     SceneEffects effects;
     Bounds3 bounds;
     RenderDefaults defaults;
@@ -63,10 +71,11 @@ public:
 
     // The closest hit along the ray, and whether anything blocks it. Surfaces whose alpha mask
     // cuts them out where the ray meets them are passed through (scene_intersection.cpp).
-    // The hit on a textured material carries the footprint of a pixel in texture space.
+    // The hit on a textured material carries the footprint of a pixel in texture space when
+    // the scene's texture layouts read it (texture_footprints).
     std::optional<Hit> intersect(const Ray& ray) const {
         std::optional<Hit> hit = has_alpha_masks ? intersect_through_cutouts(ray) : accelerator->intersect(ray);
-        if (hit && effects.textures && camera && materials[hit->material]->is_textured())
+        if (hit && texture_footprints && materials[hit->material]->is_textured())
             add_texture_footprint(*hit, meshes[hit->mesh], *camera);
         return hit;
     }
@@ -74,6 +83,10 @@ public:
         return has_alpha_masks ? occluded_through_cutouts(ray) : accelerator->occluded(ray);
     }
     bool has_alpha_masks = false;               // some material has an alpha mask (set by load_scene)
+    // The scene has textures, a camera, and a texture layout that filters by footprint
+    // (Registry::texture_layouts_use_footprint; set by load_scene). Chapters 02-07's layout looks
+    // up at the point, so their hits skip the footprint's work.
+    bool texture_footprints = false;
     // The most cut-out surfaces one ray passes through; a ray that meets more stops at the last.
     static constexpr int MaxCutoutCrossings = 64;
     const Material& material(const Hit& hit) const { return *materials[hit.material]; }

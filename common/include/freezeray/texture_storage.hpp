@@ -6,6 +6,9 @@
 #include "freezeray/image.hpp"
 #include "freezeray/math.hpp"
 
+#include <cstddef>
+#include <string>
+
 namespace freezeray {
 
 // What happens to texture coordinates outside [0, 1]: the image repeats, its edge texels
@@ -43,6 +46,11 @@ public:
     // with weights that sum to one, so no lookup leaves this range.
     const Spectrum& minimum() const { return minimum_; }
     const Spectrum& maximum() const { return maximum_; }
+
+    // The bytes its texels take (padding and MIP levels included), and what `info` says of it:
+    // "linear, float, 1 level", "tiled (4 x 4), 8-bit sRGB, 14 levels".
+    virtual std::size_t memory_bytes() const = 0;
+    virtual std::string description() const = 0;
 
 protected:
     // Every layout is made from a decoded image (at least 1 x 1) and keeps its size and range.

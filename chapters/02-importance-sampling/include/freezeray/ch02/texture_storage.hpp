@@ -89,6 +89,9 @@ public:
         return bilinear_lookup(*this, lookup.uv, wrap);
     }
 
+    std::size_t memory_bytes() const override { return texels_.size() * sizeof(Spectrum); }
+    std::string description() const override { return "linear, float, 1 level"; }
+
 private:
     std::vector<Spectrum> texels_;
 };

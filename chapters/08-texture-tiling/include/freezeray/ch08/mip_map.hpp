@@ -7,6 +7,7 @@
 #include "freezeray/image.hpp"
 #include "freezeray/math.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace freezeray::ch08 {
@@ -19,7 +20,12 @@ namespace freezeray::ch08 {
 // Mipmap Creation", 2005, and of any exact area average).
 Image next_mip_level(const Image& level);
 
-// Level 0 (the image) and every level after it, down to 1 x 1: 1 + floor(log2(max(w, h))) levels.
+// Calls `visit` with level 1, 2, ... of `image` down to the 1 x 1 level, in that order, each
+// made from the one before: only two levels are held at a time.
+void for_each_mip_level(const Image& image, const std::function<void(const Image& level)>& visit);
+
+// Level 0 (the image) and every level after it, down to 1 x 1: 1 + floor(log2(max(w, h))) levels
+// (for_each_mip_level's, the very loop the layouts store).
 std::vector<Image> build_mip_pyramid(const Image& image);
 
 // The MIP level for a pixel's footprint (duv_dx, duv_dy) on a texture of width x height texels:

@@ -15,10 +15,18 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace freezeray::ch08 {
+
+// One texel a lookup read: its level and its column and row there.
+struct TexelRead {
+    int level;
+    int x;
+    int y;
+};
 
 // What every chapter 08 storage tells tests, `info` and the benchmark, whatever its layout.
 class MipMappedTexture : public TextureStorage {
@@ -30,13 +38,12 @@ public:
     virtual Spectrum level_texel(int level, int x, int y) const = 0;
     // The bilinearly filtered value of one level at uv (what a trilinear lookup blends).
     virtual Spectrum level_lookup(int level, const Vec2& uv, WrapMode wrap) const = 0;
-    // A lookup that also appends the cache line (address / 64) of every texel it reads to `lines`.
-    virtual Spectrum lookup_recording_lines(const TextureLookup& lookup, WrapMode wrap,
-                                            std::vector<std::uintptr_t>& lines) const = 0;
-    // Texels of every level, padding included.
-    virtual std::size_t memory_bytes() const = 0;
-    // "tiled (4 x 4), 8-bit sRGB, 12 levels"
-    virtual std::string description() const = 0;
+    // A lookup that also appends every texel it reads to `reads` (for texture-benchmark's cache
+    // model and access maps).
+    virtual Spectrum lookup_recording_reads(const TextureLookup& lookup, WrapMode wrap,
+                                            std::vector<TexelRead>& reads) const = 0;
+    // The cache line (address / 64) that holds texel (x, y) of `level`.
+    virtual std::uintptr_t cache_line(int level, int x, int y) const = 0;
     TextureFilter filter() const { return filter_; }
 
 protected:
@@ -51,11 +58,23 @@ private:
 template <typename Addressing, typename Format>
 class TexelLevel {
 public:
-    TexelLevel(const Image& image, const Format& format)
-        : width_(image.width()), height_(image.height()), addressing_(width_, height_), format_(format),
-          texels_(addressing_.texel_count(width_, height_)) {
+    // Every texel of `image`, encoded (rounded to the format's nearest value).
+    TexelLevel(const Image& image, const Format& format) : TexelLevel(image.width(), image.height(), format) {
         for (int y = 0; y < height_; ++y)
             for (int x = 0; x < width_; ++x) texels_[addressing_.index(x, y)] = format_.encode(image.at(x, y));
+    }
+
+    // `image` in a format that must hold every texel exactly (bit for bit), or nothing from the
+    // first texel it does not: deciding on the format and encoding are one pass over the image.
+    static std::optional<TexelLevel> encode_exactly(const Image& image, const Format& format) {
+        TexelLevel level(image.width(), image.height(), format);
+        for (int y = 0; y < level.height_; ++y)
+            for (int x = 0; x < level.width_; ++x) {
+                const auto stored = level.format_.encode_exactly(image.at(x, y));
+                if (!stored) return std::nullopt;
+                level.texels_[level.addressing_.index(x, y)] = *stored;
+            }
+        return level;
     }
 
     // What chapter 02's bilinear_lookup<Layout> reads.
@@ -64,10 +83,15 @@ public:
     Spectrum texel(int x, int y) const { return format_.decode(texels_[addressing_.index(x, y)]); }
 
     std::size_t memory_bytes() const { return texels_.size() * sizeof(typename Format::Stored); }
+    const Format& format() const { return format_; }
     // Where texel (x, y) lies in memory (for the access heat map).
     const void* address(int x, int y) const { return &texels_[addressing_.index(x, y)]; }
 
 private:
+    TexelLevel(int width, int height, const Format& format)
+        : width_(width), height_(height), addressing_(width, height), format_(format),
+          texels_(addressing_.texel_count(width, height)) {}
+
     int width_;
     int height_;
     Addressing addressing_;
@@ -95,16 +119,16 @@ Spectrum trilinear_lookup(const TextureLookup& lookup, WrapMode wrap, int width,
 }
 // END BOOK
 
-// A level that notes the cache line of every texel read from it (for texture-benchmark's cache
-// model and access maps), and returns the level's texel.
+// A level that notes every texel read from it, and returns the level's texel.
 template <typename Level>
-struct LineRecorder {
+struct ReadRecorder {
     const Level& level;
-    std::vector<std::uintptr_t>& lines;
+    int index;  // the level's
+    std::vector<TexelRead>& reads;
     int width() const { return level.width(); }
     int height() const { return level.height(); }
     Spectrum texel(int x, int y) const {
-        lines.push_back(reinterpret_cast<std::uintptr_t>(level.address(x, y)) / CacheLineBytes);
+        reads.push_back({index, x, y});
         return level.texel(x, y);
     }
 };
@@ -112,21 +136,17 @@ struct LineRecorder {
 template <typename Addressing, typename Format>
 class MipMappedStorage final : public MipMappedTexture {
 public:
-    // With the trilinear filter, every level of the pyramid; with the bilinear one, level 0 only.
-    MipMappedStorage(const Image& image, const Format& format, TextureFilter filter)
-        : MipMappedTexture(image, filter), format_(format) {
-        // Each level is encoded as soon as it is made, and only the one below the next is kept in
-        // floats: an 8192^2 texture needs its 768 MiB image and 192 MiB more, not the whole
-        // pyramid in floats.
-        levels_.emplace_back(image, format);
-        if (filter == TextureFilter::Trilinear && (image.width() > 1 || image.height() > 1)) {
-            Image level = next_mip_level(image);
-            for (;;) {
-                levels_.emplace_back(level, format);
-                if (level.width() == 1 && level.height() == 1) break;
-                level = next_mip_level(level);
-            }
-        }
+    // `image` with its level 0 already encoded (in `format`); with the trilinear filter, every
+    // level of the pyramid, with the bilinear one, level 0 only.
+    MipMappedStorage(const Image& image, TexelLevel<Addressing, Format> level0, TextureFilter filter)
+        : MipMappedTexture(image, filter) {
+        const Format format = level0.format();
+        levels_.push_back(std::move(level0));
+        // Each level is encoded as soon as it is made (for_each_mip_level keeps only the one below
+        // the next in floats): an 8192^2 texture needs its 768 MiB image and 192 MiB more, not the
+        // whole pyramid in floats.
+        if (filter == TextureFilter::Trilinear)
+            for_each_mip_level(image, [&](const Image& level) { levels_.emplace_back(level, format); });
         for (const auto& level : levels_) sizes_.emplace_back(level.width(), level.height());
     }
 
@@ -144,11 +164,14 @@ public:
                                 [this](int level) -> const auto& { return levels_[static_cast<std::size_t>(level)]; });
     }
 
-    Spectrum lookup_recording_lines(const TextureLookup& lookup, WrapMode wrap,
-                                    std::vector<std::uintptr_t>& lines) const override {
+    Spectrum lookup_recording_reads(const TextureLookup& lookup, WrapMode wrap,
+                                    std::vector<TexelRead>& reads) const override {
         return trilinear_lookup(lookup, wrap, width(), height(), static_cast<int>(levels_.size()), [&](int level) {
-            return LineRecorder<TexelLevel<Addressing, Format>>{levels_[static_cast<std::size_t>(level)], lines};
+            return ReadRecorder<TexelLevel<Addressing, Format>>{levels_[static_cast<std::size_t>(level)], level, reads};
         });
+    }
+    std::uintptr_t cache_line(int level, int x, int y) const override {
+        return reinterpret_cast<std::uintptr_t>(levels_[static_cast<std::size_t>(level)].address(x, y)) / CacheLineBytes;
     }
 
     std::size_t memory_bytes() const override {
@@ -162,12 +185,11 @@ public:
         if constexpr (requires { Addressing::tile_size; })
             layout += " (" + std::to_string(Addressing::tile_size) + " x " + std::to_string(Addressing::tile_size) + ")";
         std::string format = Format::name;
-        if constexpr (requires(Format f) { f.decoding; }) format += std::string(" ") + format_.decoding->name;
+        if constexpr (requires(Format f) { f.decoding; }) format += std::string(" ") + levels_.front().format().decoding->name;
         return layout + ", " + format + ", " + std::to_string(levels_.size()) + (levels_.size() == 1 ? " level" : " levels");
     }
 
 private:
-    Format format_;
     std::vector<TexelLevel<Addressing, Format>> levels_;
 };
 

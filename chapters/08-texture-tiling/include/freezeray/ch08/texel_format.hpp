@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace freezeray::ch08 {
@@ -36,9 +37,10 @@ const ByteDecoding& srgb_byte_decoding();
 // 8-bit file, after chapter 02's read_texture_image gave back its stored values.
 const ByteDecoding& data_byte_decoding();
 
-// The decoding whose table holds every channel of every texel of `image` exactly (bit for bit),
-// or null when neither does (a floating-point or 16-bit file): that image is kept in floats.
-const ByteDecoding* exact_byte_decoding(const Image& image);
+// The decodings an image from an 8-bit file may have been read with, in the order a layout
+// tries them: the first whose table holds every texel exactly (bit for bit) keeps the image in
+// bytes; when neither does (a floating-point or 16-bit file) it is kept in floats.
+std::array<const ByteDecoding*, 2> byte_decodings();
 
 // One byte per channel and one of padding: 4 bytes a texel.
 struct ByteTexels {
@@ -52,6 +54,8 @@ struct ByteTexels {
     // The nearest code per channel: exact for texels of the image the decoding was chosen for,
     // rounded for the averages of its MIP levels.
     Stored encode(const Spectrum& value) const;
+    // The codes of `value` when the table holds each channel exactly (bit for bit), else nothing.
+    std::optional<Stored> encode_exactly(const Spectrum& value) const;
     Spectrum decode(const Stored& texel) const {
         return Spectrum(decoding->value[texel.code[0]], decoding->value[texel.code[1]], decoding->value[texel.code[2]]);
     }

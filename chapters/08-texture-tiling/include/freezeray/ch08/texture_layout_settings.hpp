@@ -22,6 +22,9 @@ struct TextureLayoutSettings {
     int tile_size = 4;  // texels on a tile's side (the tiled layout): 2, 4, 8, 16 or 32
 };
 
+// The tile sizes the tiled layout is compiled for (make_tiled_storage dispatches on them).
+constexpr bool is_valid_tile_size(int size) { return size == 2 || size == 4 || size == 8 || size == 16 || size == 32; }
+
 // Reads "filter", "texel_format" and "tile_size"; an InputError at the key for a value outside
 // their choices.
 TextureLayoutSettings read_texture_layout_settings(const Parameters& parameters);
