@@ -41,8 +41,9 @@ private:
     std::vector<std::uintptr_t> tags_;
 };
 
-// L1, L2 and L3 of this machine's processor by default (32 KiB 8-way, 1 MiB 8-way, 32 MiB
-// 16-way per lscpu); misses of each level counted.
+// L1, L2 and L3 of a common server core (32 KiB 8-way, 1 MiB 8-way, 32 MiB 16-way: what lscpu
+// reported on the machine of the first measurements; processors differ, and the model is
+// fixed so that its counts compare across machines); misses of each level counted.
 struct CacheHierarchyModel {
     CacheLevelModel l1{32 * 1024, 8};
     CacheLevelModel l2{1024 * 1024, 8};

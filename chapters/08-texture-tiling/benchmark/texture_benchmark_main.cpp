@@ -407,7 +407,7 @@ int main(int argc, char** argv) {
         if (!json)
             std::printf("ns/lookup: the fastest of %d passes; ratio: the first configuration's ns/lookup over this one's "
                         "(its speed relative to the first). Per lookup: texels read, distinct 64-byte lines among them, and "
-                        "misses of a model of this processor's caches (L1 32 KiB 8-way, L2 1 MiB 8-way, L3 32 MiB 16-way, "
+                        "misses of a model of a common server core's caches (L1 32 KiB 8-way, L2 1 MiB 8-way, L3 32 MiB 16-way, "
                         "LRU) fed with the textures' reads alone, in the lookups' order\n",
                         repetitions);
 
