@@ -1,44 +1,70 @@
 #!/usr/bin/env python3
-"""Grade the exercises of a FreezeRay build: run the grading tests and print a score table.
+"""Grade the exercises of a FreezeRay build: build the grading tests, run them, print a score table.
 
-    tests/grading/grade.py --build-dir build [--chapter ch01] [--quiet] [--json grade.json]
+A student, on their own copy:
 
-Runs `ctest --test-dir DIR -L exercise --output-on-failure` (every grading test in its own
-process, so a crash or a hang costs one exercise, not the whole run), reads ctest's JUnit
-output and prints, per exercise, its points and whether it passed; then the total per
-chapter and overall. Points come from tests/grading/points.json (default 1 per exercise).
+    tests/grading/grade.py --build-dir build [--chapter ch01 | --only ch01/name] [--quiet]
 
-An exercise whose region is in the sources but whose test did not run is listed as
-"no test" and counts for its points in the total possible.
+A teacher, on one submission or a folder of them, against the teacher's own tree:
 
-Exit status: 0 whenever the report could be produced (a low grade is not an error);
-2 when the build folder or its grading tests are missing.
+    tests/grading/grade.py --teacher-tests TEACHER --submission DIR --build-dir WORK --student ID --csv grades.csv
+    tests/grading/grade.py --teacher-tests TEACHER --batch SUBMISSIONS --build-dir WORK --csv grades.csv
+
+First the grading tests are built (`cmake --build DIR --target exercise_tests`, its log in
+DIR/grade-build.log): what is graded is what the sources say now. With --no-build nothing is
+built, and a test binary older than any of its sources is refused, naming them.
+
+Then `ctest -L exercise` runs every grading test in its own process with its time limit (the
+TIMEOUT of tests/exercises/CMakeLists.txt), so a crash or a hang costs that exercise only; its
+output goes to DIR/grade-ctest.log (printed with --verbose). The report gives, per exercise, its
+points and result, and for a failure the first line of the reason (a Catch2 message, or the
+failed check's expansion); then the total per chapter and overall. Points come from
+tests/grading/points.json (the teacher's, in teacher mode).
+
+Teacher mode (--teacher-tests with --submission or --batch): the graded tree is the teacher's,
+with only the bodies of the exercise regions taken from the submission (submission.py), so a
+submission that edits a test or points.json gains nothing. --batch grades every folder of
+SUBMISSIONS in turn in the same WORK folder (the build reused: only files whose regions differ
+recompile), its name the student id, into one CSV.
+
+Gradebook output: --json FILE and --csv FILE hold the student id (--student), the time, the
+hash of the graded regions, per exercise its points, earned, result and reason, and per chapter
+the subtotals.
+
+Exit status: 0 whenever the report could be produced (a low grade, or code that does not
+compile, is a grade, not an error); 2 when it could not (no build folder, stale binary with
+--no-build, no grading tests).
 """
 
 from __future__ import annotations
 
 import argparse
+import csv
+import datetime
 import json
 import re
 import subprocess
 import sys
 import tempfile
+import time
 import xml.etree.ElementTree as ElementTree
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # keep __pycache__ out of the source tree
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import exercises  # noqa: E402  (the shared parsing module beside this script)
+import exercises  # noqa: E402  (the shared modules beside this script)
+import submission  # noqa: E402
 
 # ctest names a grading test "exercise: ch01/name" (Catch2 v2's catch_discover_tests may
 # drop the space after the colon, so accept both).
 CTEST_PREFIX = re.compile(r"^exercise:\s*")
 CTEST_LABEL = "exercise"
+POINTS = Path("tests") / "grading" / "points.json"
 
 
 class GradingError(Exception):
-    """The report cannot be produced (no build folder, no grading tests...)."""
+    """The report cannot be produced (no build folder, no grading tests, a stale binary...)."""
 
 
 @dataclass
@@ -46,7 +72,8 @@ class Outcome:
     """What happened to one grading test: status is 'pass', 'fail' or 'not run'."""
 
     status: str
-    detail: str = ""
+    detail: str = ""   # not implemented, needs chNN/x, timed out, wrong result...
+    reason: str = ""   # the first line of why, from the test's output
 
 
 @dataclass
@@ -58,9 +85,21 @@ class Row:
     points: int
     earned: int
     result: str
+    reason: str = ""
 
 
-# --- Running the tests ------------------------------------------------------------------------
+@dataclass
+class Report:
+    """A graded build: its rows and what identifies it in a gradebook."""
+
+    rows: list[Row]
+    student: str = ""
+    time: str = ""
+    source_hash: str = ""
+    notes: list[str] = field(default_factory=list)
+
+
+# --- Building ---------------------------------------------------------------------------------
 
 def check_build_dir(build_dir: Path) -> None:
     """Raise GradingError unless build_dir is a configured CMake build with tests."""
@@ -72,32 +111,55 @@ def check_build_dir(build_dir: Path) -> None:
                            "folder with FREEZERAY_BUILD_TESTS=ON?")
 
 
-def ctest_command(build_dir: Path, junit: Path, chapter: str | None, jobs: int) -> list[str]:
-    """The ctest command line that runs the grading tests (of one chapter, if given)."""
+def check_fresh(build_dir: Path, source: Path | None) -> None:
+    """With --no-build: refuse a grading-test binary older than any of its sources."""
+    binary = submission.find_grading_tests(build_dir)
+    if binary is None:
+        raise GradingError(f"{build_dir} has no {submission.TEST_TARGET}: build it, or leave out --no-build")
+    if source is None or not source.is_dir():
+        return
+    newer = submission.newer_sources(source, binary)
+    if newer:
+        names = ", ".join(path.as_posix() for path in newer)
+        raise GradingError(f"{binary} is older than its sources ({names}{', ...' if len(newer) == 5 else ''}): "
+                           "it would grade old code. Leave out --no-build to build first.")
+
+
+# --- Running the tests ------------------------------------------------------------------------
+
+def ctest_command(build_dir: Path, junit: Path, chapter: str | None, jobs: int, only: str | None = None) -> list[str]:
+    """The ctest command line that runs the grading tests (of one chapter or exercise, if given)."""
     command = ["ctest", "--test-dir", str(build_dir), "-L", CTEST_LABEL, "--output-on-failure",
                "--output-junit", str(junit.resolve())]
-    if chapter is not None:
+    if only is not None:
+        command += ["-R", f"^exercise: ?{re.escape(only)}$"]
+    elif chapter is not None:
         command += ["-R", f"^exercise: ?{chapter}/"]
     if jobs > 1:
         command += ["--parallel", str(jobs)]
     return command
 
 
-def run_grading_tests(build_dir: Path, chapter: str | None, quiet: bool, jobs: int) -> dict[str, Outcome]:
-    """Run the grading tests with ctest; return the outcome per exercise name."""
+def run_grading_tests(build_dir: Path, chapter: str | None, verbose: bool, jobs: int,
+                      only: str | None = None) -> dict[str, Outcome]:
+    """Run the grading tests with ctest (output to BUILD/grade-ctest.log); the outcome per exercise."""
     with tempfile.TemporaryDirectory(prefix="freezeray-grade-") as scratch:
         junit = Path(scratch) / "grading.xml"
-        command = ctest_command(build_dir, junit, chapter, jobs)
+        command = ctest_command(build_dir, junit, chapter, jobs, only)
         try:
-            completed = subprocess.run(command, capture_output=quiet, text=True)
+            completed = subprocess.run(command, capture_output=True, text=True)
         except FileNotFoundError as error:
             raise GradingError("ctest was not found: install CMake (Debian: apt install cmake)") from error
+        (build_dir / "grade-ctest.log").write_text(completed.stdout + completed.stderr, encoding="utf-8")
+        if verbose:
+            print(completed.stdout + completed.stderr)
         if not junit.is_file():
             raise GradingError(f"ctest wrote no results (exit status {completed.returncode}); "
                                f"command: {' '.join(command)}")
-        outcomes = parse_ctest_junit(junit.read_text(encoding="utf-8", errors="replace"))
+        outcomes = parse_ctest_junit(junit.read_text(encoding="utf-8", errors="replace"),
+                                     ctest_verdicts(completed.stdout))
     if not outcomes:
-        which = f"for {chapter} " if chapter else ""
+        which = f"for {only or chapter} " if (only or chapter) else ""
         raise GradingError(f"no grading tests {which}(label '{CTEST_LABEL}') are registered in {build_dir}; "
                            f"build them first: cmake --build {build_dir} --target exercise_tests")
     return outcomes
@@ -108,8 +170,26 @@ def exercise_of(test_name: str) -> str:
     return CTEST_PREFIX.sub("", test_name, count=1)
 
 
-def parse_ctest_junit(text: str) -> dict[str, Outcome]:
-    """Read ctest's --output-junit file: the outcome of each test, keyed by exercise name."""
+# ctest's own line for a test it stopped or that crashed:
+#   "3/3 Test #3: exercise:ch01/settle .............***Timeout   3.00 sec"
+#   "1/3 Test #1: exercise:ch01/twice ..............***Exception: SegFault  0.01 sec"
+CTEST_VERDICT = re.compile(r"Test\s+#\d+:\s+(?P<name>.+?)\s+\.+\s*\*\*\*(?P<verdict>Timeout|Exception: \S+)")
+
+
+def ctest_verdicts(stdout: str) -> dict[str, str]:
+    """What ctest's output says of tests that timed out or crashed (its JUnit file does not say)."""
+    verdicts = {}
+    for match in CTEST_VERDICT.finditer(stdout):
+        verdict = match["verdict"]
+        verdicts[exercise_of(match["name"])] = \
+            "timed out" if verdict == "Timeout" else f"crashed ({verdict.split(': ', 1)[1]})"
+    return verdicts
+
+
+def parse_ctest_junit(text: str, verdicts: dict[str, str] | None = None) -> dict[str, Outcome]:
+    """Read ctest's --output-junit file (and its verdicts on timeouts and crashes, from its
+    output): the outcome of each test, keyed by exercise name."""
+    verdicts = verdicts or {}
     root = ElementTree.fromstring(text)
     outcomes: dict[str, Outcome] = {}
     for case in root.iter("testcase"):
@@ -121,7 +201,14 @@ def parse_ctest_junit(text: str) -> dict[str, Outcome]:
             outcomes[name] = Outcome("pass")
         elif status == "fail" or failure is not None:
             message = failure.get("message", "") if failure is not None else ""
-            outcomes[name] = Outcome("fail", failure_detail(name, message, output))
+            detail = failure_detail(name, message, output)
+            if detail == "wrong result" and name in verdicts:
+                detail = verdicts[name]
+            reason = "" if detail == "not implemented" or detail.startswith("needs ") else first_reason(output)
+            if detail == "timed out":
+                seconds = float(case.get("time", "0") or 0)
+                reason = f"no result within {seconds:.0f} s: an endless loop, or far too slow"
+            outcomes[name] = Outcome("fail", detail, reason)
         else:
             outcomes[name] = Outcome("not run", status or "not run")
     return outcomes
@@ -134,9 +221,49 @@ def failure_detail(name: str, message: str, output: str) -> str:
         return "not implemented"
     if stubs:
         return f"needs {stubs[0]}"
+    if message.lower() == "timeout":
+        return "timed out"
     if message and message.lower() not in ("failed", ""):
         return message.lower()
     return "wrong result"
+
+
+# Catch2's account of a failure: "file:line: FAILED:", the check, then "with expansion:" and
+# "with message:" blocks, each followed by indented lines.
+FAILED_LINE = re.compile(r":\d+: FAILED:\s*$")
+BLOCK_TITLES = ("with expansion:", "with message:", "with messages:", "due to unexpected exception with message:")
+
+
+def first_reason(output: str) -> str:
+    """The first line of why a Catch2 test failed: its message, else its expansion, else its check."""
+    lines = output.splitlines()
+    for index, line in enumerate(lines):
+        if not FAILED_LINE.search(line):
+            continue
+        blocks: dict[str, str] = {}
+        check = ""
+        current = None
+        for following in lines[index + 1:index + 40]:
+            stripped = following.strip()
+            if FAILED_LINE.search(following) or stripped.startswith("----") or stripped.startswith("===="):
+                break
+            if stripped in BLOCK_TITLES:
+                current = stripped
+                continue
+            if not stripped:
+                continue
+            if current is None and not check:
+                check = stripped
+            elif current is not None and current not in blocks:
+                blocks[current] = stripped
+        for title in ("with message:", "with messages:", "due to unexpected exception with message:", "with expansion:"):
+            if title in blocks:
+                return blocks[title]
+        return check
+    for line in lines:  # not Catch2's format: the first line that speaks of an error or a failure
+        if "error" in line.lower() or "fail" in line.lower():
+            return line.strip()
+    return ""
 
 
 # --- The report -------------------------------------------------------------------------------
@@ -153,22 +280,32 @@ def source_dir_of(build_dir: Path) -> Path | None:
 
 
 def build_rows(outcomes: dict[str, Outcome], region_names: list[str], default_points: int,
-               points: dict[str, int], chapter: str | None) -> list[Row]:
+               points: dict[str, int], chapter: str | None, only: str | None = None) -> list[Row]:
     """One row per exercise (tested or marked in the sources), sorted by name."""
     names = set(outcomes) | set(region_names)
-    if chapter is not None:
+    if only is not None:
+        names = {name for name in names if name == only}
+    elif chapter is not None:
         names = {name for name in names if name.startswith(chapter + "/")}
     rows = []
     for name in sorted(names):
         worth = points.get(name, default_points)
         outcome = outcomes.get(name, Outcome("not run", "no test"))
+        chapter_name = name.split("/", 1)[0]
         if outcome.status == "pass":
-            rows.append(Row(name, name.split("/", 1)[0], worth, worth, "pass"))
+            rows.append(Row(name, chapter_name, worth, worth, "pass"))
         elif outcome.status == "fail":
-            rows.append(Row(name, name.split("/", 1)[0], worth, 0, f"FAIL ({outcome.detail})"))
+            rows.append(Row(name, chapter_name, worth, 0, f"FAIL ({outcome.detail})", outcome.reason))
         else:
-            rows.append(Row(name, name.split("/", 1)[0], worth, 0, outcome.detail))
+            rows.append(Row(name, chapter_name, worth, 0, outcome.detail))
     return rows
+
+
+def rows_for_build_failure(region_names: list[str], default_points: int, points: dict[str, int],
+                           chapter: str | None, only: str | None, error: str) -> list[Row]:
+    """Every exercise at zero when the grading tests do not compile: the error is the reason."""
+    outcomes = {name: Outcome("fail", "does not compile", error) for name in region_names}
+    return build_rows(outcomes, region_names, default_points, points, chapter, only)
 
 
 def percent(earned: int, possible: int) -> str:
@@ -176,18 +313,24 @@ def percent(earned: int, possible: int) -> str:
     return f"{100 * earned / possible:.0f}%" if possible else "-"
 
 
+def chapter_totals(rows: list[Row]) -> dict[str, tuple[int, int]]:
+    """(earned, possible) per chapter, in the rows' order."""
+    totals: dict[str, tuple[int, int]] = {}
+    for row in rows:
+        earned, possible = totals.get(row.chapter, (0, 0))
+        totals[row.chapter] = (earned + row.earned, possible + row.points)
+    return totals
+
+
 def format_report(rows: list[Row]) -> str:
-    """The grade report: one line per exercise, a total per chapter, the overall total."""
+    """The grade report: one line per exercise (with a failure's reason), a total per chapter, the overall total."""
     width = max([len("exercise"), *(len(row.exercise) for row in rows)]) + 2
     lines = [f"{'exercise':{width}}{'points':>8}  result", "-" * (width + 30)]
-    chapters: dict[str, list[Row]] = {}
-    for row in rows:
-        chapters.setdefault(row.chapter, []).append(row)
-    for chapter, chapter_rows in chapters.items():
-        for row in chapter_rows:
-            lines.append(f"{row.exercise:{width}}{f'{row.earned}/{row.points}':>8}  {row.result}")
-        earned = sum(row.earned for row in chapter_rows)
-        possible = sum(row.points for row in chapter_rows)
+    totals = chapter_totals(rows)
+    for chapter, (earned, possible) in totals.items():
+        for row in (r for r in rows if r.chapter == chapter):
+            reason = f": {row.reason}" if row.reason else ""
+            lines.append(f"{row.exercise:{width}}{f'{row.earned}/{row.points}':>8}  {row.result}{reason}")
         lines.append(f"{chapter + ' total':{width}}{f'{earned}/{possible}':>8}  {percent(earned, possible)}")
         lines.append("")
     earned = sum(row.earned for row in rows)
@@ -198,43 +341,175 @@ def format_report(rows: list[Row]) -> str:
     return "\n".join(lines)
 
 
-def report_json(rows: list[Row]) -> dict:
+def report_json(report: Report) -> dict:
     """The report as plain data, for --json."""
     return {
-        "exercises": [row.__dict__ for row in rows],
-        "earned": sum(row.earned for row in rows),
-        "possible": sum(row.points for row in rows),
+        "student": report.student,
+        "time": report.time,
+        "source_hash": report.source_hash,
+        "exercises": [row.__dict__ for row in report.rows],
+        "chapters": {chapter: {"earned": e, "possible": p} for chapter, (e, p) in chapter_totals(report.rows).items()},
+        "earned": sum(row.earned for row in report.rows),
+        "possible": sum(row.points for row in report.rows),
+        "notes": report.notes,
     }
 
 
+CSV_COLUMNS = ["student", "time", "source_hash", "kind", "name", "points", "earned", "result", "reason"]
+
+
+def csv_rows(report: Report) -> list[list[str]]:
+    """The gradebook's rows of one report: one per exercise, one per chapter, one overall."""
+    head = [report.student, report.time, report.source_hash]
+    rows = [head + ["exercise", r.exercise, str(r.points), str(r.earned), r.result, r.reason] for r in report.rows]
+    for chapter, (earned, possible) in chapter_totals(report.rows).items():
+        rows.append(head + ["chapter", chapter, str(possible), str(earned), percent(earned, possible), ""])
+    earned = sum(r.earned for r in report.rows)
+    possible = sum(r.points for r in report.rows)
+    rows.append(head + ["overall", "", str(possible), str(earned), percent(earned, possible), "; ".join(report.notes)])
+    return rows
+
+
+def write_csv(path: Path, reports: list[Report]) -> None:
+    """All reports into one CSV, written atomically."""
+    partial = path.with_name(path.name + ".part")
+    with partial.open("w", newline="", encoding="utf-8") as file:
+        writer = csv.writer(file)
+        writer.writerow(CSV_COLUMNS)
+        for report in reports:
+            writer.writerows(csv_rows(report))
+    partial.replace(path)
+
+
+# --- Grading one build ------------------------------------------------------------------------
+
+def now() -> str:
+    return datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0).isoformat()
+
+
+def say(args: argparse.Namespace, message: str) -> None:
+    if not args.quiet:
+        print(message, flush=True)
+
+
+def grade_build(args: argparse.Namespace, build_dir: Path, source: Path | None, points_file: Path,
+                student: str, source_hash: str, notes: list[str]) -> Report:
+    """Build (unless --no-build), run the grading tests, and make the report of one build."""
+    default_points, points = exercises.load_points(points_file)
+    region_names = []
+    if source is not None and source.is_dir():
+        region_names = [region.name for region in exercises.find_regions_with_problems(source)[0]]
+    report = Report([], student, now(), source_hash, notes)
+    if args.no_build:
+        check_fresh(build_dir, source)
+    else:
+        say(args, f"building {submission.TEST_TARGET} in {build_dir} ...")
+        built = submission.build_grading_tests(build_dir, args.jobs_build)
+        say(args, f"  {'built' if built.ok else 'FAILED'} in {built.seconds:.0f} s (log: {built.log})")
+        if not built.ok:
+            report.rows = rows_for_build_failure(region_names, default_points, points, args.chapter, args.only,
+                                                 built.error)
+            report.notes.append(f"the grading tests do not compile: {built.error}")
+            return report
+    say(args, "running the grading tests ...")
+    outcomes = run_grading_tests(build_dir, args.chapter, args.verbose, args.jobs, args.only)
+    report.rows = build_rows(outcomes, region_names, default_points, points, args.chapter, args.only)
+    return report
+
+
+def grade_submission(args: argparse.Namespace, folder: Path, student: str) -> Report:
+    """Teacher mode: the teacher's tree with this submission's regions, built in WORK and graded."""
+    started = time.monotonic()
+    work = args.build_dir
+    tree = submission.assemble_graded_tree(args.teacher_tests, folder, work / "source")
+    build = work / "build"
+    notes = [f"regions missing from the submission (graded as not implemented): {', '.join(tree.missing)}"] \
+        if tree.missing else []
+    if not (build / "CMakeCache.txt").is_file():
+        say(args, f"configuring {build} ...")
+        configured = submission.configure(tree.source, build)
+        if not configured.ok:
+            raise GradingError(f"configuring the teacher's tree failed: {configured.error} (log: {configured.log})")
+    report = grade_build(args, build, tree.source, args.teacher_tests / POINTS, student, tree.source_hash, notes)
+    report.notes.append(f"graded in {time.monotonic() - started:.0f} s ({tree.written} files rewritten)")
+    return report
+
+
+def print_report(args: argparse.Namespace, report: Report) -> None:
+    if report.student:
+        print(f"\n{report.student}  ({report.time}, sources {report.source_hash[:12]})")
+    print()
+    print(format_report(report.rows))
+    for note in report.notes:
+        print(f"note: {note}")
+
+
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description="Run the grading tests of a build and print the grade.")
-    parser.add_argument("--build-dir", type=Path, required=True, help="the CMake build folder")
-    parser.add_argument("--chapter", metavar="chNN", help="grade only this chapter, e.g. ch01")
-    parser.add_argument("--quiet", action="store_true", help="print only the report, not ctest's output")
+    parser = argparse.ArgumentParser(description="Build and run the grading tests of a build and print the grade.")
+    parser.add_argument("--build-dir", type=Path, required=True,
+                        help="the CMake build folder (teacher mode: the work folder, WORK/source and WORK/build)")
+    which = parser.add_mutually_exclusive_group()
+    which.add_argument("--chapter", metavar="chNN", help="grade only this chapter, e.g. ch01")
+    which.add_argument("--only", metavar="chNN/name", help="grade only this exercise")
+    parser.add_argument("--no-build", action="store_true",
+                        help="do not build first; refuse a test binary older than its sources")
+    parser.add_argument("--quiet", action="store_true", help="print only the report")
+    parser.add_argument("--verbose", action="store_true", help="also print ctest's output")
     parser.add_argument("--jobs", type=int, default=1, help="grading tests run at once (default 1)")
+    parser.add_argument("--jobs-build", type=int, default=2, help="compiler processes when building (default 2)")
+    parser.add_argument("--student", default="", help="the student id written into --json and --csv")
     parser.add_argument("--json", type=Path, metavar="FILE", help="also write the report as JSON to FILE")
+    parser.add_argument("--csv", type=Path, metavar="FILE", help="also write the report as CSV to FILE")
+    parser.add_argument("--teacher-tests", type=Path, metavar="TEACHER",
+                        help="teacher mode: the teacher's FreezeRay tree, whose tests and points.json grade")
+    graded = parser.add_mutually_exclusive_group()
+    graded.add_argument("--submission", type=Path, metavar="DIR", help="teacher mode: one submission's tree")
+    graded.add_argument("--batch", type=Path, metavar="SUBMISSIONS",
+                        help="teacher mode: a folder of submissions, one folder each, named by student id")
     args = parser.parse_args(argv)
     if args.chapter is not None and not exercises.is_chapter_name(args.chapter):
         parser.error(f"'{args.chapter}' is not a chapter name: expected chNN, e.g. ch01")
+    if args.only is not None and not re.fullmatch(exercises.NAME_PATTERN, args.only):
+        parser.error(f"'{args.only}' is not an exercise name: expected chNN/kebab-name")
+    teacher_mode = args.submission is not None or args.batch is not None
+    if teacher_mode != (args.teacher_tests is not None):
+        parser.error("--teacher-tests goes with --submission or --batch, and they with it")
+    if args.batch is not None and args.no_build:
+        parser.error("--batch builds each submission; --no-build does not apply")
 
+    reports: list[Report] = []
     try:
-        check_build_dir(args.build_dir)
-        default_points, points = exercises.load_points(Path(__file__).resolve().parent / "points.json")
-        source = source_dir_of(args.build_dir)
-        region_names = []
-        if source is not None and source.is_dir():
-            region_names = [region.name for region in exercises.find_regions_with_problems(source)[0]]
-        outcomes = run_grading_tests(args.build_dir, args.chapter, args.quiet, args.jobs)
+        if args.batch is not None:
+            folders = sorted(p for p in args.batch.iterdir() if p.is_dir()) if args.batch.is_dir() else []
+            if not folders:
+                raise GradingError(f"{args.batch} holds no submission folders")
+            for folder in folders:
+                say(args, f"== {folder.name}")
+                report = grade_submission(args, folder, folder.name)
+                reports.append(report)
+                print_report(args, report)
+        elif args.submission is not None:
+            if not args.submission.is_dir():
+                raise GradingError(f"submission {args.submission} is not a folder")
+            reports.append(grade_submission(args, args.submission, args.student))
+            print_report(args, reports[-1])
+        else:
+            check_build_dir(args.build_dir)
+            source = source_dir_of(args.build_dir)
+            points_file = (source / POINTS) if source is not None and (source / POINTS).is_file() \
+                else Path(__file__).resolve().parent / "points.json"
+            source_hash = submission.hash_of_tree(source) if source is not None and source.is_dir() else ""
+            reports.append(grade_build(args, args.build_dir, source, points_file, args.student, source_hash, []))
+            print_report(args, reports[-1])
     except (GradingError, ValueError) as error:
         print(f"grade: error: {error}", file=sys.stderr)
         return 2
 
-    rows = build_rows(outcomes, region_names, default_points, points, args.chapter)
-    print()
-    print(format_report(rows))
     if args.json is not None:
-        args.json.write_text(json.dumps(report_json(rows), indent=2) + "\n", encoding="utf-8")
+        data = [report_json(r) for r in reports] if args.batch is not None else report_json(reports[0])
+        args.json.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+    if args.csv is not None:
+        write_csv(args.csv, reports)
     return 0
 
 

@@ -207,8 +207,8 @@ def configure_student_build(source: Path, build: Path, solution_cache: dict[str,
         raise RuntimeError("configuring the student copy failed:\n" + tail(result.stdout + result.stderr))
 
 
-def build_student_tests(build: Path, jobs: int) -> None:
-    """Build only the exercise_tests target of the student copy."""
+def build_student_tests(build: Path, jobs: int) -> list[str]:
+    """Build only the exercise_tests target of the student copy; return the compiler's warnings."""
     command = ["cmake", "--build", str(build), "--target", TEST_TARGET, "--config", "Release",
                "--parallel", str(jobs)]
     print_step("building the student copy: " + " ".join(command))
@@ -220,6 +220,7 @@ def build_student_tests(build: Path, jobs: int) -> None:
             "(does a region declare a name used after `// END EXERCISE`, or sit in a constexpr "
             "or consteval function?)\n" + build_errors(result.stdout + result.stderr))
     print_step(f"built in {time.monotonic() - started:.0f} s")
+    return [line for line in (result.stdout + result.stderr).splitlines() if "warning:" in line]
 
 
 def student_executable(solution_build: Path, solution_executable: Path, student_build: Path) -> Path:
@@ -352,7 +353,12 @@ def prove(args: argparse.Namespace) -> int:
         try:
             copy = refresh_copy(source, work)
             configure_student_build(copy, work / "build", read_cmake_cache(build_dir))
-            build_student_tests(work / "build", args.jobs)
+            warnings = build_student_tests(work / "build", args.jobs)
+            if warnings:
+                # A student reads every warning as theirs: the stubs must not cause any
+                # (cmake/Warnings.cmake turns off the unused-name warnings in a student copy).
+                problems.append(f"the student copy compiles with {len(warnings)} warning(s), which the "
+                                "student would take for their own:\n" + "\n".join(warnings[:10]))
             stubbed_executable = student_executable(build_dir, executable, work / "build")
             print_step("running the grading tests on the stubs")
             to_isolate = check_stubbed(proofs, stubbed_executable, work / "build", args.test_timeout)

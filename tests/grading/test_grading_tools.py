@@ -369,7 +369,26 @@ class GradeReport(unittest.TestCase):
         self.assertEqual((outcomes["ch01/four-times"].status, outcomes["ch01/four-times"].detail),
                          ("fail", "not implemented"))
         self.assertEqual(outcomes["ch02/mirror"].detail, "needs ch01/twice")
-        self.assertEqual(outcomes["ch02/other"].detail, "timeout")
+        self.assertEqual(outcomes["ch02/other"].detail, "timed out")
+
+    def test_timeouts_and_crashes_come_from_ctests_output(self):
+        verdicts = grade.ctest_verdicts(
+            "3/4 Test #3: exercise:ch02/other .............***Timeout   3.00 sec\n"
+            "1/4 Test  #1: exercise: ch01/twice ..............***Exception: SegFault  0.01 sec\n"
+            "2/4 Test #2: exercise:ch02/mirror .............***Failed    0.01 sec\n")
+        self.assertEqual(verdicts, {"ch02/other": "timed out", "ch01/twice": "crashed (SegFault)"})
+        outcomes = grade.parse_ctest_junit(CANNED_JUNIT.replace('message="Timeout"', 'message=""'), verdicts)
+        self.assertEqual(outcomes["ch02/other"].detail, "timed out")
+        self.assertIn("no result within", outcomes["ch02/other"].reason)
+
+    def test_the_reason_is_the_first_line_of_catchs_account(self):
+        output = ("tests/exercises/test_ch01.cpp:40: FAILED:\n  CHECK( mean == Approx(1.0) )\nwith expansion:\n"
+                  "  0.543 == Approx( 1.0 )\nwith message:\n  mean 0.543 vs known 1\n\n"
+                  "tests/exercises/test_ch01.cpp:41: FAILED:\n  CHECK( x )\n")
+        self.assertEqual(grade.first_reason(output), "mean 0.543 vs known 1")
+        self.assertEqual(grade.first_reason(output.replace("with message:\n  mean 0.543 vs known 1\n", "")),
+                         "0.543 == Approx( 1.0 )")
+        self.assertEqual(grade.first_reason("x.cpp:3: FAILED:\n  REQUIRE( ok )\n"), "REQUIRE( ok )")
 
     def test_table_totals_per_chapter_and_overall(self):
         outcomes = grade.parse_ctest_junit(CANNED_JUNIT)

@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""End-to-end tests of grade.py on a tiny CMake project (configured and built for real, in a
+temporary folder): teacher mode ignores a submission's weakened test and edited points; a
+hang costs one exercise; a stale binary is refused with --no-build; the CSV and JSON carry the
+gradebook's fields; --batch grades several submissions in one work folder.
+
+    python3 tests/grading/test_teacher_mode.py      (needs cmake and a C++ compiler; ~30 s)
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import shutil
+import sys
+import tempfile
+import time
+import unittest
+from contextlib import redirect_stderr, redirect_stdout
+from pathlib import Path
+
+sys.dont_write_bytecode = True
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+import grade  # noqa: E402
+
+ERROR_HPP = """\
+#pragma once
+#include <stdexcept>
+#include <string>
+namespace freezeray {
+class ExerciseNotImplemented : public std::logic_error {
+public:
+    explicit ExerciseNotImplemented(const std::string& name)
+        : std::logic_error("exercise " + name + " is not implemented yet") {}
+};
+}
+"""
+
+WARPS_HPP = """\
+#pragma once
+#include "freezeray/error.hpp"
+namespace freezeray {
+int twice(int x);
+int four_times(int x);
+int settle(int x);
+}
+"""
+
+WARPS_CPP = """\
+#include "freezeray/ch01/warps.hpp"
+
+namespace freezeray {
+
+int twice(int x) {
+    // EXERCISE(ch01/twice): return twice x
+    return x + x;
+    // END EXERCISE
+}
+
+int four_times(int x) {
+    // EXERCISE(ch01/four-times): return four times x
+    return 4 * x;
+    // END EXERCISE
+}
+
+int settle(int x) {
+    // EXERCISE(ch01/settle): return x
+    return x;
+    // END EXERCISE
+}
+
+}  // namespace freezeray
+"""
+
+# A stand-in for Catch2: runs the named check, prints a failure the way Catch2 does.
+GRADING_TESTS = """\
+#include "freezeray/ch01/warps.hpp"
+#include <cstdio>
+#include <exception>
+#include <string>
+using namespace freezeray;
+static int check(const char* text, int got, int expected) {
+    if (got == expected) return 0;
+    std::printf("tests/exercises/exercises.cpp:9: FAILED:\\n  CHECK( %s )\\nwith expansion:\\n  %d == %d\\n", text, got, expected);
+    return 1;
+}
+int main(int, char** argv) {
+    const std::string name = argv[1];
+    try {
+        if (name == "ch01/twice") return check("twice(2) == 4", twice(2), 4);
+        if (name == "ch01/four-times") return check("four_times(2) == 8", four_times(2), 8);
+        if (name == "ch01/settle") return check("settle(3) == 3", settle(3), 3);
+    } catch (const std::exception& e) {
+        std::printf("due to unexpected exception with message:\\n  %s\\n", e.what());
+        return 1;
+    }
+    return 2;
+}
+"""
+
+CMAKE = """\
+cmake_minimum_required(VERSION 3.16)
+project(Tiny CXX)
+option(FREEZERAY_WERROR "" OFF)
+enable_testing()
+add_library(course chapters/01-naive/src/warps.cpp)
+target_include_directories(course PUBLIC common/include chapters/01-naive/include)
+add_executable(exercise_tests tests/exercises/exercises.cpp)
+target_link_libraries(exercise_tests course)
+foreach(name twice four-times settle)
+  add_test(NAME "exercise:ch01/${name}" COMMAND exercise_tests ch01/${name})
+  set_tests_properties("exercise:ch01/${name}" PROPERTIES LABELS exercise TIMEOUT 3)
+endforeach()
+"""
+
+POINTS = '{"default_points": 1, "points": {"ch01/four-times": 2}}\n'
+
+
+def write_tree(root: Path, files: dict[str, str]) -> None:
+    for name, text in files.items():
+        path = root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+
+
+def teacher_tree(root: Path) -> None:
+    write_tree(root, {
+        "CMakeLists.txt": CMAKE,
+        "common/include/freezeray/error.hpp": ERROR_HPP,
+        "chapters/01-naive/include/freezeray/ch01/warps.hpp": WARPS_HPP,
+        "chapters/01-naive/src/warps.cpp": WARPS_CPP,
+        "tests/exercises/exercises.cpp": GRADING_TESTS,
+        "tests/grading/points.json": POINTS,
+    })
+
+
+def cheating_submission(root: Path) -> None:
+    """Two planted mistakes (twice off by one, settle never returns), four-times' markers removed,
+    and the grading tests and points edited in the student's favour."""
+    teacher_tree(root)
+    text = WARPS_CPP.replace("return x + x;", "return x + x + 1;")
+    text = text.replace("    // EXERCISE(ch01/settle): return x\n    return x;",
+                        "    // EXERCISE(ch01/settle): return x\n    for (volatile int i = 0;; i = i + 1) {}\n    return x;")
+    text = text.replace("    // EXERCISE(ch01/four-times): return four times x\n", "")
+    text = text.replace("    return 4 * x;\n    // END EXERCISE\n", "    return 4 * x;\n", 1)
+    write_tree(root, {
+        "chapters/01-naive/src/warps.cpp": text,
+        "tests/exercises/exercises.cpp": "int main() { return 0; }\n",  # every test passes
+        "tests/grading/points.json": '{"default_points": 100, "points": {}}\n',
+    })
+
+
+def run_grade(arguments: list[str]) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    with redirect_stdout(out), redirect_stderr(err):
+        status = grade.main(arguments)
+    return status, out.getvalue(), err.getvalue()
+
+
+@unittest.skipUnless(shutil.which("cmake") and shutil.which("ctest"), "needs cmake and ctest")
+class TeacherMode(unittest.TestCase):
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory(prefix="freezeray-teacher-test-")
+        self.root = Path(self.folder.name)
+        self.teacher = self.root / "teacher"
+        teacher_tree(self.teacher)
+
+    def tearDown(self):
+        self.folder.cleanup()
+
+    def results(self, json_file: Path) -> dict[str, dict]:
+        return {row["exercise"]: row for row in json.loads(json_file.read_text())["exercises"]}
+
+    def test_the_teachers_tests_grade_the_students_regions(self):
+        cheat = self.root / "submissions" / "alice"
+        cheating_submission(cheat)
+        good = self.root / "submissions" / "bob"
+        teacher_tree(good)
+        work = self.root / "work"
+
+        # Graded in its own build, the weakened tests pass everything: the weakening is real.
+        own_build = self.root / "alice-build"
+        self.assertEqual(os.system(f"cmake -S {cheat} -B {own_build} >/dev/null 2>&1"), 0)
+        status, out, _ = run_grade(["--build-dir", str(own_build), "--quiet"])
+        self.assertEqual(status, 0)
+        self.assertIn("(3 of 3 exercises pass)", out)
+
+        # Teacher mode: the teacher's tests and points; a hang costs one exercise.
+        report = self.root / "alice.json"
+        table = self.root / "alice.csv"
+        status, out, err = run_grade(["--teacher-tests", str(self.teacher), "--submission", str(cheat),
+                                      "--build-dir", str(work), "--student", "alice", "--json", str(report),
+                                      "--csv", str(table), "--quiet"])
+        self.assertEqual(status, 0, err)
+        rows = self.results(report)
+        self.assertEqual(rows["ch01/twice"]["result"], "FAIL (wrong result)")
+        self.assertEqual(rows["ch01/twice"]["reason"], "5 == 4")
+        self.assertEqual(rows["ch01/settle"]["result"], "FAIL (timed out)")
+        self.assertEqual(rows["ch01/four-times"]["result"], "FAIL (not implemented)")
+        self.assertEqual([rows[n]["points"] for n in sorted(rows)], [2, 1, 1])  # the teacher's points.json
+        data = json.loads(report.read_text())
+        self.assertEqual(data["student"], "alice")
+        self.assertRegex(data["source_hash"], r"^[0-9a-f]{64}$")
+        self.assertEqual(data["chapters"]["ch01"], {"earned": 0, "possible": 4})
+        self.assertIn("ch01/four-times", " ".join(data["notes"]))
+        self.assertIn("ch01/twice", out)
+        self.assertIn("5 == 4", out)  # the reason is in the table too
+        with table.open() as file:
+            lines = list(csv.DictReader(file))
+        self.assertEqual(list(lines[0]), grade.CSV_COLUMNS)
+        self.assertEqual({line["student"] for line in lines}, {"alice"})
+        self.assertEqual([line["kind"] for line in lines], ["exercise"] * 3 + ["chapter", "overall"])
+
+        # A correct submission in the same work folder: everything passes, another hash.
+        status, out, err = run_grade(["--teacher-tests", str(self.teacher), "--submission", str(good),
+                                      "--build-dir", str(work), "--student", "bob", "--json", str(report), "--quiet"])
+        self.assertEqual(status, 0, err)
+        self.assertEqual({row["result"] for row in self.results(report).values()}, {"pass"})
+        self.assertNotEqual(json.loads(report.read_text())["source_hash"], data["source_hash"])
+
+        # --batch: both, one CSV.
+        table = self.root / "grades.csv"
+        status, out, err = run_grade(["--teacher-tests", str(self.teacher), "--batch", str(self.root / "submissions"),
+                                      "--build-dir", str(work), "--csv", str(table), "--quiet"])
+        self.assertEqual(status, 0, err)
+        with table.open() as file:
+            overall = {line["student"]: line["earned"] for line in csv.DictReader(file) if line["kind"] == "overall"}
+        self.assertEqual(overall, {"alice": "0", "bob": "4"})
+
+    def test_a_stale_binary_is_refused_and_a_normal_run_rebuilds(self):
+        build = self.root / "build"
+        self.assertEqual(os.system(f"cmake -S {self.teacher} -B {build} >/dev/null 2>&1"), 0)
+        status, out, err = run_grade(["--build-dir", str(build), "--quiet"])
+        self.assertEqual(status, 0, err)
+        self.assertIn("(3 of 3 exercises pass)", out)
+        # A mistake made after the build: --no-build refuses to grade the old binary.
+        source = self.teacher / "chapters/01-naive/src/warps.cpp"
+        time.sleep(1.1)  # a later modification time than the binary's, on any file system
+        source.write_text(WARPS_CPP.replace("return 4 * x;", "return 3 * x;"))
+        status, out, err = run_grade(["--build-dir", str(build), "--no-build", "--quiet"])
+        self.assertEqual(status, 2)
+        self.assertIn("older than its sources", err)
+        self.assertIn("chapters/01-naive/src/warps.cpp", err)
+        # Without --no-build it builds first and grades what the sources say.
+        status, out, err = run_grade(["--build-dir", str(build), "--only", "ch01/four-times", "--quiet"])
+        self.assertEqual(status, 0, err)
+        self.assertIn("FAIL (wrong result): 6 == 8", out)
+        self.assertNotIn("ch01/twice", out)
+        # Code that does not compile is a grade of zero with the compiler's first error, not a crash.
+        source.write_text(WARPS_CPP.replace("return x + x;", "return x + ;"))
+        status, out, err = run_grade(["--build-dir", str(build), "--quiet"])
+        self.assertEqual(status, 0, err)
+        self.assertIn("FAIL (does not compile)", out)
+        self.assertIn("error", out)
+
+
+if __name__ == "__main__":
+    unittest.main()
