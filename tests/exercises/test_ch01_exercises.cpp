@@ -3,6 +3,7 @@
 #include "freezeray/ch01/lambertian.hpp"
 #include "freezeray/ch01/warps.hpp"
 
+#include "bias_detectors.hpp"
 #include "chi_square.hpp"
 #include "statistics.hpp"
 #include "test_scenes.hpp"
@@ -68,11 +69,48 @@ TEST_CASE("ch01/path-throughput", "[exercise]") {
     request.height = 16;
     request.seed = 5;
     request.accelerator = "bruteforce";  // chapter 01's own (the KD-tree would run chapter 06's exercises)
+    auto pixel_values = [](const RenderResult& result) {
+        std::vector<double> values;
+        for (const Spectrum& p : result.image.pixels()) values.push_back(p.g);
+        return values;
+    };
     const RenderResult result = testing::render(request);
-    std::vector<double> values;
-    for (const Spectrum& p : result.image.pixels()) values.push_back(p.g);
-    const stats::TestResult test = stats::one_sample_t_test(values, 1.0, stats::exercise_test_alpha);
+    const stats::TestResult test = stats::one_sample_t_test(pixel_values(result), 1.0, stats::exercise_test_alpha);
+
+    // Paths of at most two segments (one bounce): exactly Le (1 + albedo) = 0.75. Short paths
+    // make the classic mistakes' answers exact too, Le (1 + q) with q the mistaken weight's mean
+    // (bias_detectors.hpp), without the heavy tails that long products of a wrong weight have;
+    // their answers are at least 6 % apart, and this mean's standard error is about 0.5 %.
+    request.max_depth = 2;
+    const std::vector<double> short_paths = pixel_values(testing::render(request));
+    const stats::TestResult test_short = stats::one_sample_t_test(short_paths, 0.75, stats::exercise_test_alpha);
+    double mean = 0.0;
+    for (const double v : short_paths) mean += v / static_cast<double>(short_paths.size());
     INFO(test.message);
+    INFO(test_short.message);
+    const std::string hint = test.passed && test_short.passed
+                                 ? ""
+                                 : testing::likely_mistake(mean, testing::furnace_suspects(0.5, 0.5, 2), 0.025);
+    INFO(hint);
     CHECK(test.passed);
+    CHECK(test_short.passed);
     CHECK(result.invalid_samples == 0u);
+
+    // The same sphere seen from outside, white (albedo 1) under a constant sky of radiance 1:
+    // every pixel is 1. The sphere is wound inward, so the camera sees its back faces, where
+    // cos theta_i < 0 in the shading frame: a weight with cos instead of |cos| turns negative,
+    // and the film counts negative samples as invalid (and adds them as zero).
+    request.scene = testing::scene_path("furnace/scene-environment.json");
+    request.max_depth = 0;
+    const RenderResult outside = testing::render(request);
+    const stats::TestResult test_outside = stats::one_sample_t_test(pixel_values(outside), 1.0, stats::exercise_test_alpha);
+    INFO(test_outside.message);
+    const std::string sign_hint =
+        outside.invalid_samples == 0
+            ? ""
+            : "likely mistake: cos theta_i without its absolute value (on a back face it is negative, and so is the "
+              "weight: " + std::to_string(outside.invalid_samples) + " negative samples)";
+    INFO(sign_hint);
+    CHECK(test_outside.passed);
+    CHECK(outside.invalid_samples == 0u);
 }

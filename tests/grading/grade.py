@@ -234,32 +234,54 @@ FAILED_LINE = re.compile(r":\d+: FAILED:\s*$")
 BLOCK_TITLES = ("with expansion:", "with message:", "with messages:", "due to unexpected exception with message:")
 
 
+# Catch2's compact reporter (the grading tests'): one line per failure,
+#   "file.cpp:95: failed: test.passed for: false with 2 messages: 'a' and 'likely mistake: ...'"
+COMPACT_FAILURE = re.compile(r":\d+: failed: (?P<check>.*?)(?: for: (?P<expansion>.*?))?"
+                             r"(?: with (?:\d+ messages|message): (?P<messages>'.*'))?$")
+
+
+def best_message(messages: list[str], fallback: str) -> str:
+    """A bias detector's "likely mistake", else the message that says FAILED, else the first."""
+    for wanted in ("likely mistake:", "FAILED"):
+        for message in messages:
+            if wanted in message:
+                return message
+    return next((m for m in messages if m), fallback)
+
+
 def first_reason(output: str) -> str:
-    """The first line of why a Catch2 test failed: its message, else its expansion, else its check."""
+    """Why a Catch2 test failed, in one line: best_message of its first failure's messages, else
+    the check's expansion, else the check (compact reporter, or the console's)."""
+    for line in output.splitlines():
+        match = COMPACT_FAILURE.search(line)
+        if match:
+            messages = match["messages"][1:-1].split("' and '") if match["messages"] else []
+            return best_message(messages, match["expansion"] or match["check"])
     lines = output.splitlines()
     for index, line in enumerate(lines):
         if not FAILED_LINE.search(line):
             continue
-        blocks: dict[str, str] = {}
-        check = ""
-        current = None
-        for following in lines[index + 1:index + 40]:
+        check, expansion, messages = "", "", []
+        current, paragraph = None, []
+        for following in lines[index + 1:index + 60] + [""]:
             stripped = following.strip()
             if FAILED_LINE.search(following) or stripped.startswith("----") or stripped.startswith("===="):
                 break
-            if stripped in BLOCK_TITLES:
-                current = stripped
+            if stripped in BLOCK_TITLES or not stripped:
+                if paragraph:  # Catch2 wraps a long message over several lines: join them
+                    text = " ".join(paragraph)
+                    if current == "with expansion:" and not expansion:
+                        expansion = text
+                    elif current is not None and current != "with expansion:":
+                        messages.append(text)
+                    elif current is None and not check:
+                        check = text
+                    paragraph = []
+                if stripped:
+                    current = stripped
                 continue
-            if not stripped:
-                continue
-            if current is None and not check:
-                check = stripped
-            elif current is not None and current not in blocks:
-                blocks[current] = stripped
-        for title in ("with message:", "with messages:", "due to unexpected exception with message:", "with expansion:"):
-            if title in blocks:
-                return blocks[title]
-        return check
+            paragraph.append(stripped)
+        return best_message(messages, expansion or check)
     for line in lines:  # not Catch2's format: the first line that speaks of an error or a failure
         if "error" in line.lower() or "fail" in line.lower():
             return line.strip()

@@ -215,10 +215,11 @@ def remove_stale_files(destination: Path, keep: set[Path]) -> int:
 
 
 def make_student_copy(source: Path, destination: Path, only: str | None = None,
-                      chapter: str | None = None, update: bool = False) -> dict[str, int]:
-    """Copy source to destination with the chosen regions stubbed. Returns counts for the summary."""
+                      chapter: str | None = None, update: bool = False, stub: bool = True) -> dict[str, int]:
+    """Copy source to destination with the chosen regions stubbed (none with stub=False: a copy of
+    the solution). Returns counts for the summary."""
     source = source.resolve()
-    regions = exercises.select_regions(exercises.find_regions(source), only=only, chapter=chapter)
+    regions = exercises.select_regions(exercises.find_regions(source), only=only, chapter=chapter) if stub else []
     prepare_destination(destination, update)
     by_file: dict[Path, list[exercises.Region]] = {}
     for region in regions:

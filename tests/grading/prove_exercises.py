@@ -24,6 +24,7 @@ changed. Exit status 0 when everything is proven, 1 on any violation, 2 on bad a
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import shutil
 import subprocess
@@ -237,13 +238,88 @@ def student_executable(solution_build: Path, solution_executable: Path, student_
     return found
 
 
-def refresh_copy(source: Path, work: Path, only: str | None = None) -> Path:
+def refresh_copy(source: Path, work: Path, only: str | None = None, stub: bool = True) -> Path:
     """Make (or bring up to date) the student copy in work/source; return its path."""
     copy = work / "source"
-    counts = make_student_copy.make_student_copy(source, copy, only=only, update=True)
+    counts = make_student_copy.make_student_copy(source, copy, only=only, update=True, stub=stub)
     print_step(f"student copy in {copy}: {counts['stubbed']} exercise(s) stubbed, "
                f"{counts['written']} file(s) rewritten")
     return copy
+
+
+# --- Planted mistakes -------------------------------------------------------------------------
+# A grading test's bias detector names a classic mistake when the test fails (tests/support/
+# bias_detectors.hpp). planted_mistakes.json lists, per exercise, mistakes to plant in the
+# solution: each must make the test fail with its own detector's words, and no other's.
+
+PLANTS_FILE = Path(__file__).resolve().parent / "planted_mistakes.json"
+
+
+@dataclass
+class Plant:
+    exercise: str
+    mistake: str   # a few words for the table
+    replace: str   # text of the solution's region...
+    with_: str     # ...and what the mistake writes instead
+    expect: str    # words the test's output must show
+
+
+def load_plants(path: Path = PLANTS_FILE) -> list[Plant]:
+    if not path.is_file():
+        return []
+    data = json.loads(path.read_text(encoding="utf-8"))
+    return [Plant(p["exercise"], p["mistake"], p["replace"], p["with"], p["expect"]) for p in data["planted"]]
+
+
+def plant_mistake(copy: Path, plant: Plant, regions: list[exercises.Region]) -> None:
+    """Write plant's mistake into its exercise's region in the copy (of the solution)."""
+    region = next((r for r in regions if r.name == plant.exercise), None)
+    if region is None:
+        raise RuntimeError(f"planted mistake '{plant.mistake}': no exercise {plant.exercise}")
+    path = copy / region.path
+    lines = path.read_text(encoding="utf-8").splitlines(keepends=True)
+    body = "".join(lines[region.start:region.end - 1])
+    if body.count(plant.replace) != 1:
+        raise RuntimeError(f"planted mistake '{plant.mistake}': '{plant.replace}' is not in {plant.exercise}'s "
+                           f"region exactly once ({region.path}:{region.start})")
+    lines[region.start:region.end - 1] = [body.replace(plant.replace, plant.with_)]
+    path.write_text("".join(lines), encoding="utf-8")
+
+
+def check_plants(plants: list[Plant], regions: list[exercises.Region], source: Path, work: Path,
+                 solution_build: Path, solution_executable: Path, jobs: int, timeout: float) -> list[str]:
+    """Plant each mistake in turn (incremental rebuilds); return the violations."""
+    violations = []
+    rows = []
+    for plant in plants:
+        print_step(f"planting '{plant.mistake}' in {plant.exercise}")
+        copy = refresh_copy(source, work, stub=False)
+        plant_mistake(copy, plant, regions)
+        build_student_tests(work / "build", jobs)
+        executable = student_executable(solution_build, solution_executable, work / "build")
+        run = run_test(executable, plant.exercise, work / "build", timeout)
+        others = [p.expect for p in plants if p.exercise == plant.exercise and p is not plant and p.expect in run.output]
+        if run.passed:
+            verdict = "VIOLATION: the test passes"
+            violations.append(f"{plant.exercise}: the planted mistake '{plant.mistake}' passes its grading test")
+        elif plant.expect not in run.output:
+            verdict = "VIOLATION: not named"
+            violations.append(f"{plant.exercise}: the planted mistake '{plant.mistake}' fails, but the output does not "
+                              f"name it ('{plant.expect}')")
+        elif others:
+            verdict = "VIOLATION: named wrongly too"
+            violations.append(f"{plant.exercise}: the planted mistake '{plant.mistake}' is also named as {others}")
+        else:
+            verdict = "named"
+        rows.append((plant.exercise, plant.mistake, verdict))
+    if rows:
+        width = max(len(r[0]) for r in rows) + 2
+        mistake_width = max(len(r[1]) for r in rows) + 2
+        print()
+        print(f"{'exercise':{width}}{'planted mistake':{mistake_width}}detector")
+        for exercise, mistake, verdict in rows:
+            print(f"{exercise:{width}}{mistake:{mistake_width}}{verdict}")
+    return violations
 
 
 # --- The proof --------------------------------------------------------------------------------
@@ -366,6 +442,8 @@ def prove(args: argparse.Namespace) -> int:
                 isolate(proofs, to_isolate, source, work, build_dir, executable, args.jobs, args.test_timeout)
             else:
                 report_unisolated(proofs, to_isolate)
+            problems += check_plants(load_plants(), regions, source, work, build_dir, executable, args.jobs,
+                                     args.test_timeout)
         except RuntimeError as error:
             problems.append(str(error) + regions_named_in(str(error), work / "source", regions))
 

@@ -389,6 +389,23 @@ class GradeReport(unittest.TestCase):
         self.assertEqual(grade.first_reason(output.replace("with message:\n  mean 0.543 vs known 1\n", "")),
                          "0.543 == Approx( 1.0 )")
         self.assertEqual(grade.first_reason("x.cpp:3: FAILED:\n  REQUIRE( ok )\n"), "REQUIRE( ok )")
+        # Several messages, the passing one first, a bias detector's wrapped over two lines.
+        detected = ("x.cpp:9: FAILED:\n  CHECK( test.passed )\nwith expansion:\n  false\nwith messages:\n"
+                    "  one-sample t-test, mean 1.005 vs known 1: passed\n\n"
+                    "  one-sample t-test, mean 0.99 vs known 0.75: FAILED\n\n"
+                    "  likely mistake: the cosine |cos theta_i| is missing from the weight (f /\n"
+                    "  pdf) (that would give 1, and this gives 0.99)\n\n")
+        self.assertEqual(grade.first_reason(detected), "likely mistake: the cosine |cos theta_i| is missing from "
+                                                       "the weight (f / pdf) (that would give 1, and this gives 0.99)")
+        self.assertEqual(grade.first_reason(detected.split("\n\n  likely")[0] + "\n\n"),
+                         "one-sample t-test, mean 0.99 vs known 0.75: FAILED")
+        # The compact reporter, which the grading tests use.
+        compact = ("t.cpp:95: failed: test.passed for: false with 3 messages: 'mean 0.5 vs known 1: FAILED' and "
+                   "'likely mistake: no 1/pdf (that would give 0.54)' and ''\n"
+                   "t.cpp:16: failed: p(1.0f, 4.0f) == 1.0f for: 4.0f == 1.0f\n")
+        self.assertEqual(grade.first_reason(compact), "likely mistake: no 1/pdf (that would give 0.54)")
+        self.assertEqual(grade.first_reason(compact.split("\n", 1)[1]), "4.0f == 1.0f")
+        self.assertEqual(grade.first_reason("t.cpp:3: failed: ok\n"), "ok")
 
     def test_table_totals_per_chapter_and_overall(self):
         outcomes = grade.parse_ctest_junit(CANNED_JUNIT)
