@@ -10,12 +10,17 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 using namespace freezeray;
 using namespace freezeray::ch01;
 
 TEST_CASE("ch01/uniform-hemisphere", "[exercise]") {
     // Every direction is a unit vector on the upper hemisphere, and their distribution over the
     // whole sphere matches the density 1/(2 pi) on z >= 0 (chi-square, false-failure rate 1e-6).
+    // When it does not, the samples are tested against the densities of two classic mistakes,
+    // and the one they fit is named (bias_detectors.hpp).
     PCG32 random(11, 1);
     for (int i = 0; i < 10000; ++i) {
         const Vec3 w = sample_uniform_hemisphere(Vec2(random.next_float(), random.next_float()));
@@ -24,11 +29,28 @@ TEST_CASE("ch01/uniform-hemisphere", "[exercise]") {
     }
     stats::ChiSquareOptions options;
     options.alpha = stats::exercise_test_alpha;
-    const auto result = stats::chi_square_test(
-        stats::Domain::sphere(),
-        [](PCG32& r) -> std::optional<Vec3> { return sample_uniform_hemisphere(Vec2(r.next_float(), r.next_float())); },
-        [](const Vec3& w) { return w.z >= 0.0f ? 1.0 / (2.0 * 3.14159265358979323846) : 0.0; }, options);
+    const double pi = 3.14159265358979323846;
+    const stats::SampleFunction sample = [](PCG32& r) -> std::optional<Vec3> {
+        return sample_uniform_hemisphere(Vec2(r.next_float(), r.next_float()));
+    };
+    const auto result = stats::chi_square_test(stats::Domain::sphere(), sample,
+                                               [&](const Vec3& w) { return w.z >= 0.0f ? 1.0 / (2.0 * pi) : 0.0; }, options);
     INFO(result.message);
+    const auto direction = [](const Vec3& w) { return w; };
+    const std::vector<testing::DensitySuspect> suspects{
+        // theta = (pi / 2) u: uniform in theta, tested on theta itself (density 2 / pi on [0, pi/2];
+        // per solid angle it would be 1 / (pi^2 sin theta), singular at the pole).
+        {"theta uniform in [0, pi/2] instead of cos theta uniform in [0, 1] (the density is then "
+         "1 / (pi^2 sin theta), not 1 / (2 pi))",
+         stats::Domain::interval(0.0, pi / 2.0),
+         [](const Vec3& w) { return Vec3(std::acos(std::clamp(w.z, -1.0f, 1.0f)), 0.0f, 0.0f); },
+         [&](const Vec3&) { return 2.0 / pi; }},
+        // cos theta = sqrt(u): the cosine-weighted density of chapter 02.
+        {"cos theta = sqrt(u) (that is cosine-weighted, density cos theta / pi, chapter 02's)", stats::Domain::sphere(),
+         direction, [&](const Vec3& w) { return w.z >= 0.0f ? double(w.z) / pi : 0.0; }},
+    };
+    const std::string hint = result.passed ? "" : testing::likely_density_mistake(sample, suspects, options);
+    INFO(hint);
     CHECK(result.passed);
 }
 

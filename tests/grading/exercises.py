@@ -35,6 +35,7 @@ CPP_SUFFIXES = {".cpp", ".cc", ".cxx", ".hpp", ".hh", ".h", ".hxx", ".inl", ".ip
 # Where the grading tests live, and the points table.
 TESTS_FOLDER = Path("tests") / "exercises"
 POINTS_FILE = Path("tests") / "grading" / "points.json"
+PREREQUISITES_FILE = Path("tests") / "grading" / "prerequisites.json"
 
 # The stub that replaces a region; it compiles in any function whatever its return type.
 STUB_TEMPLATE = 'throw ::freezeray::ExerciseNotImplemented("{name}");'
@@ -253,6 +254,17 @@ def load_points(path: Path) -> tuple[int, dict[str, int]]:
     return default, points
 
 
+def load_prerequisites(path: Path) -> dict[str, list[str]]:
+    """tests/grading/prerequisites.json: for an exercise, those to do first (empty when absent)."""
+    if not path.is_file():
+        return {}
+    data = json.loads(path.read_text(encoding="utf-8"))
+    table = data.get("prerequisites", {})
+    if not isinstance(table, dict) or not all(isinstance(v, list) for v in table.values()):
+        raise ValueError(f"{path}: 'prerequisites' must map exercise names to lists of names")
+    return {name: list(before) for name, before in table.items()}
+
+
 def check_tree(root: Path) -> list[str]:
     """Every problem with the markers, the grading tests' names and points.json."""
     regions, problems = find_regions_with_problems(root)
@@ -275,6 +287,15 @@ def check_tree(root: Path) -> list[str]:
     for name in points:
         if name not in names:
             problems.append(f"{POINTS_FILE.as_posix()}: points given for {name}, which is not an exercise")
+    try:
+        prerequisites = load_prerequisites(root / PREREQUISITES_FILE)
+    except ValueError as error:
+        problems.append(str(error))
+        prerequisites = {}
+    for name, before in prerequisites.items():
+        for other in [name, *before]:
+            if other not in names:
+                problems.append(f"{PREREQUISITES_FILE.as_posix()}: {other} is not an exercise")
     return problems
 
 

@@ -457,6 +457,33 @@ def grade_submission(args: argparse.Namespace, folder: Path, student: str) -> Re
     return report
 
 
+def format_exercise_list(root: Path, chapter: str | None, only: str | None) -> str:
+    """The exercises in the order to do them (chapter by chapter, each after its prerequisites),
+    with points, prerequisites, where and what."""
+    regions = exercises.select_regions(exercises.find_regions(root), only=only, chapter=chapter)
+    default_points, points = exercises.load_points(root / POINTS)
+    before = exercises.load_prerequisites(root / exercises.PREREQUISITES_FILE)
+    by_name = {region.name: region for region in regions}
+    ordered: list[exercises.Region] = []
+
+    def place(name: str, seen: tuple[str, ...] = ()) -> None:  # after its prerequisites
+        if name not in by_name or by_name[name] in ordered or name in seen:
+            return
+        for first in sorted(before.get(name, [])):
+            place(first, seen + (name,))
+        ordered.append(by_name[name])
+
+    for name in sorted(by_name):
+        place(name)
+    lines = []
+    for region in ordered:
+        worth = points.get(region.name, default_points)
+        needs = f"  (first: {', '.join(before[region.name])})" if before.get(region.name) else ""
+        lines.append(f"{region.name}  [{worth} point{'s' if worth != 1 else ''}]{needs}")
+        lines.append(f"    {region.location}: {region.description}")
+    return "\n".join(lines)
+
+
 def print_report(args: argparse.Namespace, report: Report) -> None:
     if report.student:
         print(f"\n{report.student}  ({report.time}, sources {report.source_hash[:12]})")
@@ -468,8 +495,10 @@ def print_report(args: argparse.Namespace, report: Report) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description="Build and run the grading tests of a build and print the grade.")
-    parser.add_argument("--build-dir", type=Path, required=True,
+    parser.add_argument("--build-dir", type=Path,
                         help="the CMake build folder (teacher mode: the work folder, WORK/source and WORK/build)")
+    parser.add_argument("--list", action="store_true",
+                        help="list the exercises in order, with their points and what to do before each, and stop")
     which = parser.add_mutually_exclusive_group()
     which.add_argument("--chapter", metavar="chNN", help="grade only this chapter, e.g. ch01")
     which.add_argument("--only", metavar="chNN/name", help="grade only this exercise")
@@ -489,6 +518,12 @@ def main(argv: list[str] | None = None) -> int:
     graded.add_argument("--batch", type=Path, metavar="SUBMISSIONS",
                         help="teacher mode: a folder of submissions, one folder each, named by student id")
     args = parser.parse_args(argv)
+    if args.list:
+        root = args.teacher_tests or exercises.repository_root()
+        print(format_exercise_list(root, args.chapter, args.only))
+        return 0
+    if args.build_dir is None:
+        parser.error("--build-dir is required (except with --list)")
     if args.chapter is not None and not exercises.is_chapter_name(args.chapter):
         parser.error(f"'{args.chapter}' is not a chapter name: expected chNN, e.g. ch01")
     if args.only is not None and not re.fullmatch(exercises.NAME_PATTERN, args.only):

@@ -380,6 +380,20 @@ def isolate(proofs: dict[str, Proof], names: list[str], source: Path, work: Path
                                            "does not check the exercise")
 
 
+def check_prerequisites(proofs: dict[str, Proof], prerequisites: dict[str, list[str]]) -> list[str]:
+    """A test that stops at another exercise's stub on the all-stubbed copy needs that exercise
+    first: prerequisites.json must say so, so that students learn it before they fail."""
+    violations = []
+    for proof in proofs.values():
+        run = proof.stubbed
+        if run is None or run.passed or not run.stubs or run.stubs[0] == proof.name:
+            continue
+        if run.stubs[0] not in prerequisites.get(proof.name, []):
+            violations.append(f"{proof.name}: its test runs {run.stubs[0]} first, which "
+                              f"{exercises.PREREQUISITES_FILE.as_posix()} does not list as its prerequisite")
+    return violations
+
+
 def report_unisolated(proofs: dict[str, Proof], names: list[str]) -> None:
     """Without --isolate, a test that never reached its own stub is not proven."""
     for name in names:
@@ -442,6 +456,7 @@ def prove(args: argparse.Namespace) -> int:
                 isolate(proofs, to_isolate, source, work, build_dir, executable, args.jobs, args.test_timeout)
             else:
                 report_unisolated(proofs, to_isolate)
+            problems += check_prerequisites(proofs, exercises.load_prerequisites(source / exercises.PREREQUISITES_FILE))
             problems += check_plants(load_plants(), regions, source, work, build_dir, executable, args.jobs,
                                      args.test_timeout)
         except RuntimeError as error:

@@ -243,6 +243,18 @@ class CheckingTheTree(TreeTestCase):
         problems = exercises.check_tree(self.root)
         self.assertTrue(any("ch09/nothing" in p for p in problems), problems)
 
+    def test_prerequisites_name_real_exercises_and_order_the_list(self):
+        write_tree(self.root, {"tests/grading/prerequisites.json":
+                               '{"prerequisites": {"ch01/four-times": ["ch01/twice"], "ch02/mirror": ["ch09/none"]}}'})
+        problems = exercises.check_tree(self.root)
+        self.assertEqual([p for p in problems if "prerequisites" in p],
+                         ["tests/grading/prerequisites.json: ch09/none is not an exercise"])
+        listing = grade.format_exercise_list(self.root, None, None)
+        names = [line.split()[0] for line in listing.splitlines() if not line.startswith(" ")]
+        self.assertEqual(names, ["ch01/twice", "ch01/four-times", "ch02/mirror"])  # twice moved before four-times
+        self.assertIn("ch01/four-times  [1 point]  (first: ch01/twice)", listing)
+        self.assertIn("ch02/mirror  [3 points]", listing)
+
     def test_a_region_outside_its_chapter_folder_is_reported(self):
         region = "// EXERCISE(ch01/elsewhere): return x\nreturn x;\n// END EXERCISE\n"
         write_tree(self.root, {"common/src/shared.cpp": region,
@@ -494,6 +506,16 @@ class ProofParts(unittest.TestCase):
         self.assertIn("only through ch01/a's stub", proofs["ch01/b"].violations[0])
         table = prove_exercises.format_table(proofs)
         self.assertRegex(table, r"ch01/b .*VIOLATION")
+
+    def test_a_test_stopping_at_an_unlisted_stub_is_a_violation(self):
+        folder = Path(self.folder.name)
+        proofs = prove_exercises.match_tests_to_regions([self.region("ch01/a"), self.region("ch01/b")],
+                                                        ["ch01/a", "ch01/b"])
+        prove_exercises.check_stubbed(proofs, self.executable, folder, timeout=30)
+        violations = prove_exercises.check_prerequisites(proofs, {})
+        self.assertEqual(len(violations), 1)
+        self.assertIn("ch01/b: its test runs ch01/a first", violations[0])
+        self.assertEqual(prove_exercises.check_prerequisites(proofs, {"ch01/b": ["ch01/a"]}), [])
 
     def test_catch_test_spec_escapes_special_characters(self):
         self.assertEqual(prove_exercises.catch_test_spec("ch01/a"), "ch01/a")

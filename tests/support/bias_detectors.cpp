@@ -35,4 +35,21 @@ std::vector<Suspect> furnace_suspects(double emitted, double albedo, int max_dep
     };
 }
 
+std::string likely_density_mistake(const stats::SampleFunction& sample, const std::vector<DensitySuspect>& suspects,
+                                   const stats::ChiSquareOptions& options) {
+    for (const DensitySuspect& suspect : suspects) {
+        const stats::SampleFunction mapped = [&](PCG32& random) -> std::optional<Vec3> {
+            const std::optional<Vec3> drawn = sample(random);
+            if (!drawn) return std::nullopt;
+            return suspect.coordinates(*drawn);
+        };
+        const stats::ChiSquareResult fit = stats::chi_square_test(suspect.domain, mapped, suspect.pdf, options);
+        if (!fit.passed) continue;
+        char p[64];
+        std::snprintf(p, sizeof p, " (its samples fit that density: p = %.3g)", fit.p_value);
+        return "likely mistake: " + suspect.mistake + p;
+    }
+    return "";
+}
+
 }  // namespace freezeray::testing
