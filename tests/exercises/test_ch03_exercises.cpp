@@ -6,6 +6,7 @@
 #include "freezeray/ch03/environment_light.hpp"
 #include "freezeray/ch03/mis.hpp"
 
+#include "bias_detectors.hpp"
 #include "light_chi_square.hpp"
 #include "statistics.hpp"
 
@@ -42,6 +43,14 @@ void check_light_sampling(const Light& light, const Vec3& reference, int resolut
 
 TEST_CASE("ch03/power-heuristic", "[exercise]") {
     // Veach 1997, eq. 9.13 with beta = 2: w_f = (n_f p_f)^2 / ((n_f p_f)^2 + (n_g p_g)^2).
+    // At p_f = 3 p_g the classic mistakes give values of their own (bias_detectors.hpp).
+    const std::string hint = testing::likely_mistake(
+        power_heuristic(1, 3.0f, 1, 1.0f),
+        {{"the balance heuristic (beta = 1: n_f p_f / (n_f p_f + n_g p_g)), not the power heuristic", 0.75},
+         {"the weight of the other strategy (n_g p_g)^2 / (...), not of f", 0.1},
+         {"the ratio squared without 1 + (p_f^2 / p_g^2 instead of 1 / (1 + (p_g / p_f)^2))", 9.0}},
+        1e-4);
+    INFO(hint);
     REQUIRE(power_heuristic(1, 1.0f, 1, 1.0f) == Approx(0.5).epsilon(few_roundings));
     CHECK(power_heuristic(1, 3.0f, 1, 1.0f) == Approx(0.9).epsilon(few_roundings));   // 9 / 10, not 3 / 4
     CHECK(power_heuristic(1, 1.0f, 1, 2.0f) == Approx(0.2).epsilon(few_roundings));   // 1 / 5
@@ -100,6 +109,16 @@ TEST_CASE("ch03/environment-pdf", "[exercise]") {
 
 TEST_CASE("ch03/area-to-solid-angle", "[exercise]") {
     // dA = r^2 / |cos theta_light| d omega (Veach 1997, eq. 8.10): p_omega = p_A r^2 / cos.
+    // With p_A = 2, r^2 = 9 and cos = 0.5 (right: 36) the classic mistakes give values of their own.
+    const std::string hint = testing::likely_mistake(
+        area_to_solid_angle_pdf(2.0f, 9.0f, 0.5f),
+        {{"the area density returned unconverted (a density per area, not per solid angle)", 2.0},
+         {"the cosine at the light is missing (p_A r^2)", 18.0},
+         {"multiplied by the cosine instead of divided (p_A r^2 cos)", 9.0},
+         {"the distance not squared (p_A r / cos)", 12.0},
+         {"the conversion inverted (p_A cos / r^2, solid angle to area)", 2.0 * 0.5 / 9.0}},
+        1e-4);
+    INFO(hint);
     REQUIRE(area_to_solid_angle_pdf(0.5f, 4.0f, 0.25f) == Approx(8.0).epsilon(few_roundings));
     CHECK(area_to_solid_angle_pdf(1.0f, 1.0f, 1.0f) == Approx(1.0).epsilon(few_roundings));
     CHECK(area_to_solid_angle_pdf(2.0f, 9.0f, 0.5f) == Approx(36.0).epsilon(few_roundings));
