@@ -33,7 +33,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import subprocess
 import sys
 import tempfile
@@ -43,11 +42,8 @@ ROOT = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(ROOT / "scenes" / "tools"))
 import meshes  # noqa: E402  (the scene tools' mesh generators)
 sys.path.insert(0, str(ROOT / "tools"))
+from shared_scenes import shared_scenes  # noqa: E402  (where Sponza and the ray batches are)
 from svg_plot import svg_plot  # noqa: E402  (the figures' line plots)
-
-
-def shared_scenes() -> Path:
-    return Path(os.environ.get("FREEZERAY_SHARED_SCENES", ROOT.parent / "shared" / "scenes"))
 
 
 def ray_benchmark(build_dir: Path) -> Path:

@@ -188,16 +188,38 @@ std::string storage_summary(const std::vector<std::shared_ptr<const TextureStora
            std::to_string(bytes) + " in 8-bit";
 }
 
-// One panel of the access map: the texels of `level` of `texture` inside the crop, each dark
-// (its cache line was not read), grey (its line was read, the texel was not: bytes fetched for
-// nothing) or coloured by how often it was read (viridis, once: dark blue, the most: yellow).
+// One panel of the access map: the level of `texture` that `reads` (one pixel tile's) read most,
+// cropped around them; each texel dark (its cache line was not read), grey (its line was read,
+// the texel was not: bytes fetched for nothing) or coloured by how often it was read (viridis,
+// once: dark blue, the most: yellow).
 struct AccessPanel {
     Image image;
-    std::size_t texels_read = 0, lines = 0;
+    std::size_t texels_read = 0, lines = 0;  // on the level shown; lines: on all levels
+    int level = 0, x0 = 0, y0 = 0, width = 0, height = 0;  // the texels shown
 };
 
-AccessPanel access_panel(const ch08::MipMappedTexture& texture, int level, const std::vector<ch08::TexelRead>& reads,
-                         int x0, int y0, int width, int height, int scale) {
+AccessPanel access_panel(const ch08::MipMappedTexture& texture, const std::vector<ch08::TexelRead>& reads) {
+    // The level read most (the finer of two equally read), cropped to its reads' bounds.
+    std::map<int, std::size_t> per_level;
+    for (const ch08::TexelRead& read : reads) ++per_level[read.level];
+    int level = per_level.begin()->first;
+    for (const auto& [l, n] : per_level)
+        if (n > per_level[level]) level = l;
+    int x0 = texture.level_width(level), y0 = texture.level_height(level), x1 = 0, y1 = 0;
+    for (const ch08::TexelRead& read : reads)
+        if (read.level == level) {
+            x0 = std::min(x0, read.x), y0 = std::min(y0, read.y);
+            x1 = std::max(x1, read.x), y1 = std::max(y1, read.y);
+        }
+    // A margin of a line's worth (16 texels of bytes) around the reads, the crop's edges on
+    // multiples of 16 so that every panel cuts tiles and lines at their edges; at most 192 texels
+    // a side, drawn about 384 pixels tall.
+    constexpr int Margin = 16, MaxSide = 192;
+    x0 = std::max(0, (x0 - Margin) / 16 * 16), y0 = std::max(0, (y0 - Margin) / 16 * 16);
+    x1 = (x1 + Margin + 16) / 16 * 16, y1 = (y1 + Margin + 16) / 16 * 16;  // one past the crop
+    const int width = std::min(MaxSide, x1 - x0), height = std::min(MaxSide, y1 - y0);
+    const int scale = std::max(1, 384 / std::max(width, height));
+
     std::map<std::pair<int, int>, int> count;
     std::set<std::uintptr_t> lines;
     for (const ch08::TexelRead& read : reads) {
@@ -206,7 +228,7 @@ AccessPanel access_panel(const ch08::MipMappedTexture& texture, int level, const
     }
     int most = 1;
     for (const auto& [texel, n] : count) most = std::max(most, n);
-    AccessPanel panel{Image(width * scale, height * scale), count.size(), lines.size()};
+    AccessPanel panel{Image(width * scale, height * scale), count.size(), lines.size(), level, x0, y0, width, height};
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const int tx = x0 + x, ty = y0 + y;
@@ -292,16 +314,16 @@ int main(int argc, char** argv) {
             std::printf("%-20s %-38s %8s %9s %8s %7s %7s %7s %7s %7s\n", "configuration", "storage", "MiB", "ns/lookup",
                         "ratio", "texels", "lines", "L1miss", "L2miss", "L3miss");
 
-        // The access map's tile: its lookups, and the texture it reads most.
+        // The access map's tile: how many lookups of each texture it makes, and the one it reads most.
         const std::uint32_t chosen_tile = static_cast<std::uint32_t>(map_tile[1] * tiles_per_row + map_tile[0]);
-        std::vector<RecordedLookup> tile_lookups;
+        std::size_t tile_lookups = 0;
         std::map<std::uint32_t, std::size_t> per_texture;
         for (const RecordedLookup& r : lookups)
             if (r.pixel_tile == chosen_tile) {
-                tile_lookups.push_back(r);
+                ++tile_lookups;
                 ++per_texture[r.texture];
             }
-        if (!access_map.empty() && tile_lookups.empty())
+        if (!access_map.empty() && tile_lookups == 0)
             throw InputError("--map-tile", "tile " + std::to_string(map_tile[0]) + "," + std::to_string(map_tile[1]) +
                                                " looks up no texture");
         std::uint32_t map_texture = per_texture.empty() ? 0 : per_texture.begin()->first;
@@ -333,9 +355,10 @@ int main(int argc, char** argv) {
             const double ns = best * 1e9 / static_cast<double>(lookups.size());
             if (reference == 0.0) reference = ns;
 
-            // The same lookups through the cache model: per lookup, texels read, distinct lines.
+            // The same lookups through the cache model: per lookup, texels read, distinct lines; and
+            // the access map's tile's reads of its texture.
             ch08::CacheHierarchyModel caches;
-            std::vector<ch08::TexelRead> reads;
+            std::vector<ch08::TexelRead> reads, tile_reads;
             std::vector<std::uintptr_t> lines;
             std::uint64_t texels = 0, distinct = 0;
             for (const RecordedLookup& r : lookups) {
@@ -343,6 +366,8 @@ int main(int argc, char** argv) {
                 lines.clear();
                 const ch08::MipMappedTexture& texture = as_mip_mapped(textures[r.texture]);
                 keep += texture.lookup_recording_reads(r.lookup, r.wrap, reads);
+                if (r.pixel_tile == chosen_tile && r.texture == map_texture)
+                    tile_reads.insert(tile_reads.end(), reads.begin(), reads.end());
                 for (const ch08::TexelRead& read : reads) lines.push_back(texture.cache_line(read.level, read.x, read.y));
                 texels += lines.size();
                 for (const std::uintptr_t line : lines) caches.read(line);
@@ -351,37 +376,13 @@ int main(int argc, char** argv) {
             }
 
             if (!access_map.empty()) {
-                // The tile's reads of its most-read texture, on the level it reads most (the finer of
-                // two equally read), cropped to their bounds (at most 192 texels a side).
-                const ch08::MipMappedTexture& texture = as_mip_mapped(textures[map_texture]);
-                reads.clear();
-                for (const RecordedLookup& r : tile_lookups)
-                    if (r.texture == map_texture) texture.lookup_recording_reads(r.lookup, r.wrap, reads);
-                std::map<int, std::size_t> per_level;
-                for (const ch08::TexelRead& read : reads) ++per_level[read.level];
-                int level = per_level.begin()->first;
-                for (const auto& [l, n] : per_level)
-                    if (n > per_level[level]) level = l;
-                int x0 = texture.level_width(level), y0 = texture.level_height(level), x1 = 0, y1 = 0;
-                for (const ch08::TexelRead& read : reads)
-                    if (read.level == level) {
-                        x0 = std::min(x0, read.x), y0 = std::min(y0, read.y);
-                        x1 = std::max(x1, read.x), y1 = std::max(y1, read.y);
-                    }
-                // A margin of a line's worth (16 texels of bytes) around the reads, the crop's edges
-                // on multiples of 16 so that every panel cuts tiles and lines at their edges.
-                constexpr int Margin = 16, MaxSide = 192;
-                x0 = std::max(0, (x0 - Margin) / 16 * 16), y0 = std::max(0, (y0 - Margin) / 16 * 16);
-                x1 = (x1 + Margin + 16) / 16 * 16, y1 = (y1 + Margin + 16) / 16 * 16;  // one past the crop
-                const int width = std::min(MaxSide, x1 - x0), height = std::min(MaxSide, y1 - y0);
-                const int scale = std::max(1, 384 / std::max(width, height));
-                panels.push_back(access_panel(texture, level, reads, x0, y0, width, height, scale));
+                const AccessPanel& panel = panels.emplace_back(access_panel(as_mip_mapped(textures[map_texture]), tile_reads));
                 std::fprintf(stderr,
                              "access map, %s: tile %d,%d, texture %u (%zu of the tile's %zu lookups), level %d, texels "
                              "[%d, %d] x [%d, %d]: %zu texels read, %zu cache lines (all levels)\n",
-                             run.name().c_str(), map_tile[0], map_tile[1], map_texture, per_texture[map_texture],
-                             tile_lookups.size(), level, x0, x0 + width - 1, y0, y0 + height - 1,
-                             panels.back().texels_read, panels.back().lines);
+                             name.c_str(), map_tile[0], map_tile[1], map_texture, per_texture[map_texture], tile_lookups,
+                             panel.level, panel.x0, panel.x0 + panel.width - 1, panel.y0, panel.y0 + panel.height - 1,
+                             panel.texels_read, panel.lines);
             }
 
             const double n = static_cast<double>(lookups.size());

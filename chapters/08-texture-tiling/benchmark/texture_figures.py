@@ -39,6 +39,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(ROOT / "tools"))
+from shared_scenes import shared_scenes  # noqa: E402  (where Sponza is)
 from svg_plot import svg_plot  # noqa: E402  (the book's line plots)
 
 SCENE = ROOT / "scenes" / "texture-plane" / "scene.json"
@@ -59,10 +60,6 @@ def executable(build_dir: Path, relative: str) -> Path:
     if not path.is_file():
         sys.exit(f"texture_figures: {path} is not built")
     return path
-
-
-def shared_scenes() -> Path:
-    return Path(os.environ.get("FREEZERAY_SHARED_SCENES", ROOT.parent / "shared" / "scenes"))
 
 
 def run_benchmark(args: argparse.Namespace, scene: Path, options: list[str]) -> tuple[list[dict], str]:
