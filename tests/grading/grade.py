@@ -292,13 +292,8 @@ def first_reason(output: str) -> str:
 
 def source_dir_of(build_dir: Path) -> Path | None:
     """The source tree a build folder was configured from (CMakeCache.txt), if known."""
-    cache = build_dir / "CMakeCache.txt"
-    if not cache.is_file():
-        return None
-    for line in cache.read_text(encoding="utf-8", errors="replace").splitlines():
-        if line.startswith("CMAKE_HOME_DIRECTORY:"):
-            return Path(line.split("=", 1)[1])
-    return None
+    home = submission.read_cmake_cache(build_dir).get("CMAKE_HOME_DIRECTORY")
+    return Path(home) if home else None
 
 
 def build_rows(outcomes: dict[str, Outcome], region_names: list[str], default_points: int,

@@ -26,10 +26,8 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import shutil
 import subprocess
 import sys
-import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -37,15 +35,9 @@ sys.dont_write_bytecode = True  # keep __pycache__ out of the source tree
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import exercises  # noqa: E402  (the shared parsing modules beside this script)
 import make_student_copy  # noqa: E402
+import submission  # noqa: E402
 
-TEST_TARGET = "exercise_tests"
-
-# Cache entries of the solution build that the student build should share.
-SHARED_CACHE_ENTRIES = (
-    "CMAKE_MAKE_PROGRAM", "CMAKE_CXX_COMPILER", "CMAKE_C_COMPILER",
-    "CMAKE_CXX_COMPILER_LAUNCHER", "CMAKE_C_COMPILER_LAUNCHER", "CMAKE_CXX_FLAGS",
-    "CMAKE_PREFIX_PATH", "CMAKE_TOOLCHAIN_FILE", "FREEZERAY_NATIVE",
-)
+TEST_TARGET = submission.TEST_TARGET
 
 
 @dataclass
@@ -94,27 +86,6 @@ class Proof:
 
 
 # --- Small helpers ----------------------------------------------------------------------------
-
-def read_cmake_cache(build_dir: Path) -> dict[str, str]:
-    """The entries of build_dir/CMakeCache.txt, NAME -> value (types dropped)."""
-    entries = {}
-    cache = build_dir / "CMakeCache.txt"
-    if not cache.is_file():
-        return entries
-    for line in cache.read_text(encoding="utf-8", errors="replace").splitlines():
-        if not line or line.startswith(("#", "//")) or "=" not in line:
-            continue
-        key, value = line.split("=", 1)
-        entries[key.split(":", 1)[0]] = value
-    return entries
-
-
-def find_test_executable(build_dir: Path) -> Path | None:
-    """The exercise_tests executable somewhere in build_dir (the shallowest one)."""
-    candidates = [path for path in build_dir.rglob(TEST_TARGET)
-                  if path.is_file() and os.access(path, os.X_OK) and "grading-student" not in path.parts]
-    return min(candidates, key=lambda path: len(path.parts)) if candidates else None
-
 
 def catch_test_spec(name: str) -> str:
     """A Catch2 test spec that matches exactly this test name (escapes , [ ] and backslash)."""
@@ -188,40 +159,24 @@ def stubs_in(output: str) -> list[str]:
 
 def configure_student_build(source: Path, build: Path, solution_cache: dict[str, str]) -> None:
     """Configure the student copy like the solution build (same generator, Release, no -Werror)."""
-    generator = solution_cache.get("CMAKE_GENERATOR")
-    existing = read_cmake_cache(build)
-    if existing and (existing.get("CMAKE_GENERATOR") != generator
-                     or Path(existing.get("CMAKE_HOME_DIRECTORY", "")) != source.resolve()):
-        print_step(f"removing {build}: it was configured differently")
-        shutil.rmtree(build)
-    command = ["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
-               # A stub leaves parameters unused: warnings, which must not stop the build.
-               "-DFREEZERAY_WERROR=OFF"]
-    if generator:
-        command += ["-G", generator]
-    for entry in SHARED_CACHE_ENTRIES:
-        if solution_cache.get(entry):
-            command.append(f"-D{entry}={solution_cache[entry]}")
-    print_step("configuring the student copy: " + " ".join(command))
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        raise RuntimeError("configuring the student copy failed:\n" + tail(result.stdout + result.stderr))
+    print_step(f"configuring the student copy in {build}")
+    result = submission.configure(source, build, like=solution_cache)
+    print_step("  " + " ".join(result.command))
+    if not result.ok:
+        raise RuntimeError("configuring the student copy failed:\n" + tail(result.log.read_text(encoding="utf-8")))
 
 
 def build_student_tests(build: Path, jobs: int) -> list[str]:
     """Build only the exercise_tests target of the student copy; return the compiler's warnings."""
-    command = ["cmake", "--build", str(build), "--target", TEST_TARGET, "--config", "Release",
-               "--parallel", str(jobs)]
-    print_step("building the student copy: " + " ".join(command))
-    started = time.monotonic()
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
+    print_step(f"building the student copy in {build}")
+    result = submission.build_grading_tests(build, jobs)
+    if not result.ok:
         raise RuntimeError(
             "building the student copy failed: a stub must compile wherever its region is "
             "(does a region declare a name used after `// END EXERCISE`, or sit in a constexpr "
-            "or consteval function?)\n" + build_errors(result.stdout + result.stderr))
-    print_step(f"built in {time.monotonic() - started:.0f} s")
-    return [line for line in (result.stdout + result.stderr).splitlines() if "warning:" in line]
+            "or consteval function?)\n" + build_errors(result.log.read_text(encoding="utf-8")))
+    print_step(f"built in {result.seconds:.0f} s")
+    return result.warnings
 
 
 def student_executable(solution_build: Path, solution_executable: Path, student_build: Path) -> Path:
@@ -232,7 +187,7 @@ def student_executable(solution_build: Path, solution_executable: Path, student_
             return student_build / relative
     except ValueError:
         pass
-    found = find_test_executable(student_build)
+    found = submission.find_grading_tests(student_build)
     if found is None:
         raise RuntimeError(f"the student build in {student_build} has no {TEST_TARGET} executable")
     return found
@@ -426,7 +381,7 @@ def prove(args: argparse.Namespace) -> int:
     build_dir = args.build_dir.resolve()
     work = (args.work or build_dir / "grading-student").resolve()
     regions = exercises.find_regions(source)
-    executable = args.exercise_tests or find_test_executable(build_dir)
+    executable = args.exercise_tests or submission.find_grading_tests(build_dir)
     if executable is None or not Path(executable).is_file():
         print(f"prove: error: no {TEST_TARGET} in {build_dir}; build it first: "
               f"cmake --build {args.build_dir} --target {TEST_TARGET}", file=sys.stderr)
@@ -442,7 +397,7 @@ def prove(args: argparse.Namespace) -> int:
     if any(proof.has_test and proof.has_region for proof in proofs.values()):
         try:
             copy = refresh_copy(source, work)
-            configure_student_build(copy, work / "build", read_cmake_cache(build_dir))
+            configure_student_build(copy, work / "build", submission.read_cmake_cache(build_dir))
             warnings = build_student_tests(work / "build", args.jobs)
             if warnings:
                 # A student reads every warning as theirs: the stubs must not cause any

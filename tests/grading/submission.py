@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -128,13 +129,41 @@ def hash_of_tree(root: Path) -> str:
 
 
 # --- Building ---------------------------------------------------------------------------------
+# The grading tests' build, for grade.py (a student's build, teacher mode) and prove_exercises.py
+# (the stubbed copy): configured in Release with warnings not errors (a stub leaves parameters
+# unused), only the exercise_tests target built, each log kept in the build folder.
+
+# Cache entries of a build that another build of the same sources should share (the proof's
+# stubbed copy takes them from the solution build).
+SHARED_CACHE_ENTRIES = (
+    "CMAKE_MAKE_PROGRAM", "CMAKE_CXX_COMPILER", "CMAKE_C_COMPILER",
+    "CMAKE_CXX_COMPILER_LAUNCHER", "CMAKE_C_COMPILER_LAUNCHER", "CMAKE_CXX_FLAGS",
+    "CMAKE_PREFIX_PATH", "CMAKE_TOOLCHAIN_FILE", "FREEZERAY_NATIVE",
+)
+
 
 @dataclass
 class BuildResult:
     ok: bool
     seconds: float
+    command: list[str]
     error: str = ""  # the first compiler error line, when it failed
     log: Path | None = None
+    warnings: list[str] = field(default_factory=list)  # the compiler's warning lines
+
+
+def read_cmake_cache(build_dir: Path) -> dict[str, str]:
+    """The entries of build_dir/CMakeCache.txt, NAME -> value (types dropped)."""
+    entries = {}
+    cache = build_dir / "CMakeCache.txt"
+    if not cache.is_file():
+        return entries
+    for line in cache.read_text(encoding="utf-8", errors="replace").splitlines():
+        if not line or line.startswith(("#", "//")) or "=" not in line:
+            continue
+        key, value = line.split("=", 1)
+        entries[key.split(":", 1)[0]] = value
+    return entries
 
 
 def first_error(log: str) -> str:
@@ -145,35 +174,50 @@ def first_error(log: str) -> str:
     return "the build failed (see the log)"
 
 
-def configure(source: Path, build: Path) -> BuildResult:
-    """Configure build from source (Release, warnings not errors: stubs leave parameters unused)."""
+def run_logged(command: list[str], log: Path) -> BuildResult:
+    """Run a cmake command, its output into `log`; what happened."""
     started = time.monotonic()
-    command = ["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release", "-DFREEZERAY_WERROR=OFF"]
     result = subprocess.run(command, capture_output=True, text=True)
-    build.mkdir(parents=True, exist_ok=True)
-    log = build / "grade-configure.log"
-    log.write_text(result.stdout + result.stderr, encoding="utf-8")
-    return BuildResult(result.returncode == 0, time.monotonic() - started,
-                       first_error(result.stdout + result.stderr) if result.returncode else "", log)
+    output = result.stdout + result.stderr
+    log.parent.mkdir(parents=True, exist_ok=True)
+    log.write_text(output, encoding="utf-8")
+    return BuildResult(result.returncode == 0, time.monotonic() - started, command,
+                       first_error(output) if result.returncode else "", log,
+                       [line for line in output.splitlines() if "warning:" in line])
+
+
+def configure(source: Path, build: Path, like: dict[str, str] | None = None) -> BuildResult:
+    """Configure build from source, with the generator and shared entries of the cache `like`
+    (another build's) when given; a build folder configured from elsewhere, or with another
+    generator, is removed first. The log goes to BUILD/grade-configure.log."""
+    like = like or {}
+    generator = like.get("CMAKE_GENERATOR")
+    existing = read_cmake_cache(build)
+    if existing and ((generator and existing.get("CMAKE_GENERATOR") != generator)
+                     or Path(existing.get("CMAKE_HOME_DIRECTORY", "")) != source.resolve()):
+        shutil.rmtree(build)
+    command = ["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release", "-DFREEZERAY_WERROR=OFF"]
+    if generator:
+        command += ["-G", generator]
+    command += [f"-D{entry}={like[entry]}" for entry in SHARED_CACHE_ENTRIES if like.get(entry)]
+    return run_logged(command, build / "grade-configure.log")
 
 
 def build_grading_tests(build: Path, jobs: int) -> BuildResult:
     """Build the exercise_tests target; the log goes to BUILD/grade-build.log."""
-    started = time.monotonic()
-    command = ["cmake", "--build", str(build), "--target", TEST_TARGET, "--parallel", str(jobs)]
-    result = subprocess.run(command, capture_output=True, text=True)
-    log = build / "grade-build.log"
-    log.write_text(result.stdout + result.stderr, encoding="utf-8")
-    return BuildResult(result.returncode == 0, time.monotonic() - started,
-                       first_error(result.stdout + result.stderr) if result.returncode else "", log)
+    command = ["cmake", "--build", str(build), "--target", TEST_TARGET, "--config", "Release", "--parallel", str(jobs)]
+    return run_logged(command, build / "grade-build.log")
 
 
 def find_grading_tests(build: Path) -> Path | None:
-    """The exercise_tests executable of a build, if it has been built."""
-    for candidate in [build / "tests" / "exercises" / TEST_TARGET, *build.rglob(TEST_TARGET)]:
-        if candidate.is_file() and os.access(candidate, os.X_OK):
-            return candidate
-    return None
+    """The exercise_tests executable of a build, if it has been built: where this project puts it,
+    else the shallowest one below `build` (outside the proof's stubbed copy, which is built there)."""
+    usual = build / "tests" / "exercises" / TEST_TARGET
+    if usual.is_file() and os.access(usual, os.X_OK):
+        return usual
+    candidates = [path for path in build.rglob(TEST_TARGET) if path.is_file() and os.access(path, os.X_OK)
+                  and "grading-student" not in path.relative_to(build).parts]
+    return min(candidates, key=lambda path: len(path.parts)) if candidates else None
 
 
 def newer_sources(source: Path, binary: Path, limit: int = 5) -> list[Path]:

@@ -25,19 +25,7 @@ sys.dont_write_bytecode = True
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 import grade  # noqa: E402
-
-ERROR_HPP = """\
-#pragma once
-#include <stdexcept>
-#include <string>
-namespace freezeray {
-class ExerciseNotImplemented : public std::logic_error {
-public:
-    explicit ExerciseNotImplemented(const std::string& name)
-        : std::logic_error("exercise " + name + " is not implemented yet") {}
-};
-}
-"""
+from test_grading_tools import ERROR_HPP, write_tree  # noqa: E402  (the synthetic trees' helpers)
 
 WARPS_HPP = """\
 #pragma once
@@ -117,13 +105,6 @@ endforeach()
 """
 
 POINTS = '{"default_points": 1, "points": {"ch01/four-times": 2}}\n'
-
-
-def write_tree(root: Path, files: dict[str, str]) -> None:
-    for name, text in files.items():
-        path = root / name
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text, encoding="utf-8")
 
 
 def teacher_tree(root: Path) -> None:
