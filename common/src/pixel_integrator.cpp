@@ -68,6 +68,7 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
     for (int t = 0; t < threads; ++t) {
         samplers.push_back(prototype.clone());
         samplers.back()->set_seed(settings.seed);
+        samplers.back()->plan_render(width, height, by_time || by_error ? 0 : sample_cap);
     }
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };

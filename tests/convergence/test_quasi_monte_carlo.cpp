@@ -1,7 +1,7 @@
-// Chapter 09's samplers inside the renderer: pt-mis drawing from `sobol` or `stratified` converges
+// Chapter 09's samplers inside the renderer: pt-mis drawing from `sobol`, `zsobol` or `stratified` converges
 // to the same image as pt-mis with independent samples, and stays deterministic. A QMC render's
 // per-pixel variance does not measure its error (its samples are not independent), so agreement
-// is tested over 16 runs with independent scrambles (seeds), whose spread does. Three tests at
+// is tested over 16 runs with independent scrambles (seeds), whose spread does. Four tests at
 // convergence_test_alpha (tests/STATISTICS.md, label convergence).
 #include "independent_runs.hpp"
 #include "determinism.hpp"
@@ -33,8 +33,19 @@ TEST_CASE("pt-mis with the stratified sampler agrees with independent pt-mis on 
     testing::require_agrees_with_pt_mis(request);
 }
 
+TEST_CASE("pt-mis with the zsobol sampler agrees with independent pt-mis on the Cornell box", "[convergence][ch09]") {
+    // As above, 8 x 8 blocks: 1 test. 64 spp are planned, so each pixel's 64 samples and each
+    // aligned square's are blocks of one Sobol sequence (the blue-noise arrangement).
+    testing::SplattingAgreement request;
+    request.integrator = "pt-mis@zsobol";
+    request.scene = "cornell-box/scene.json";
+    request.first_seed = 961;
+    request.block_sizes = {8};
+    testing::require_agrees_with_pt_mis(request);
+}
+
 TEST_CASE("a sobol image is bit-identical with 1 and 2 threads", "[convergence][determinism][ch09]") {
-    for (const char* integrator : {"pt-mis@sobol", "pt-naive@stratified"}) {
+    for (const char* integrator : {"pt-mis@sobol", "pt-mis@zsobol", "pt-naive@stratified"}) {
         testing::TestRender request;
         request.scene = testing::scene_path("cornell-box/scene.json");
         request.integrator = integrator;

@@ -1,13 +1,15 @@
 // Chapter 09's sequences and samplers: the Sobol points and the scrambled sampler's points are
 // nets (every elementary interval counted), the stratified sampler stratifies each block, the
 // scramble keeps what it must and randomizes the rest, and every number depends only on (seed,
-// pixel, sample index, dimension). Deterministic except the three chi-square tests of the
-// scrambles' randomness (label unit, unit_test_alpha each; tests/STATISTICS.md counts them).
+// pixel, sample index, dimension), and the zsobol sampler's pixel quads are nets together.
+// Deterministic except the six chi-square tests of the scrambles' randomness (three for sobol,
+// three for zsobol; label unit, unit_test_alpha each; tests/STATISTICS.md counts them).
 #include "freezeray/ch09/owen_scrambling.hpp"
 #include "freezeray/ch09/radical_inverse.hpp"
 #include "freezeray/ch09/sobol_matrices.hpp"
 #include "freezeray/ch09/sobol_sampler.hpp"
 #include "freezeray/ch09/stratified_sampler.hpp"
+#include "freezeray/ch09/zsobol_sampler.hpp"
 #include "freezeray/random.hpp"
 
 #include "statistics.hpp"
@@ -288,7 +290,9 @@ TEST_CASE("a sampler's numbers depend on (seed, pixel, sample, dimension) only",
     // (a clone on another thread): the pixel loop's results cannot depend on the thread or order.
     SobolSampler sobol;
     StratifiedSampler stratified;
-    for (Sampler* s : {static_cast<Sampler*>(&sobol), static_cast<Sampler*>(&stratified)}) {
+    ZSobolSampler zsobol;
+    zsobol.plan_render(16, 16, 64);
+    for (Sampler* s : {static_cast<Sampler*>(&sobol), static_cast<Sampler*>(&stratified), static_cast<Sampler*>(&zsobol)}) {
         s->set_seed(42);
         s->start_pixel_sample(3, 4, 259, 37);
         const Vec2 pixel = s->pixel_2d();
@@ -309,4 +313,132 @@ TEST_CASE("a sampler's numbers depend on (seed, pixel, sample, dimension) only",
         other->start_pixel_sample(3, 4, 259, 37);
         CHECK(other->pixel_2d() != pixel);
     }
+}
+
+namespace {
+
+// The draws of samples 0 .. count - 1 of every pixel of the square of side `side` whose corner
+// is (x0, y0), pooled.
+template <typename Value>
+std::vector<Value> square_draws(Sampler& s, int x0, int y0, int side, std::uint64_t count, Draw d,
+                                Value (*draw)(Sampler&, Draw)) {
+    std::vector<Value> draws;
+    for (int y = y0; y < y0 + side; ++y)
+        for (int x = x0; x < x0 + side; ++x)
+            for (std::uint64_t i = 0; i < count; ++i) {
+                s.start_pixel_sample(x, y, static_cast<std::uint32_t>(y * 64 + x), i);
+                draws.push_back(draw(s, d));
+            }
+    return draws;
+}
+
+}  // namespace
+
+TEST_CASE("the zsobol sampler plans its epoch and tiles from the render's size", "[unit][ch09]") {
+    ZSobolSampler sampler;
+    CHECK(sampler.epoch_log2() == ZSobolSampler::DefaultEpochLog2);
+    sampler.plan_render(64, 64, 100);  // 100 samples: blocks of 128
+    CHECK(sampler.epoch_log2() == 7);
+    CHECK(sampler.tile_log2() == 6);  // one 64 x 64 tile
+    sampler.plan_render(64, 64, 128);
+    CHECK(sampler.epoch_log2() == 7);
+    sampler.plan_render(64, 64, 1);
+    CHECK(sampler.epoch_log2() == 0);
+    sampler.plan_render(1920, 1080, 128);  // 2048 wide: tiles of 1024, the most a 32-bit index allows
+    CHECK(sampler.tile_log2() == 10);
+    sampler.plan_render(1920, 1080, std::uint64_t{1} << 20);  // 20 bits of sample number leave 12 for the tile
+    CHECK(sampler.epoch_log2() == 20);
+    CHECK(sampler.tile_log2() == 6);
+    sampler.plan_render(64, 64, std::uint64_t{1} << 30);  // epochs of at most 2^20
+    CHECK(sampler.epoch_log2() == ZSobolSampler::MaximumEpochLog2);
+    sampler.plan_render(64, 64, 0);  // a time budget: the count is unknown
+    CHECK(sampler.epoch_log2() == ZSobolSampler::DefaultEpochLog2);
+    CHECK(sampler.tile_log2() == 6);
+}
+
+TEST_CASE("the zsobol sampler's draws over any 2^m samples of a pixel from a multiple of 2^m are nets", "[unit][ch09]") {
+    // Blocks inside the first epoch (block 0, and 1 while 2^(m+1) <= 2^L) and in later epochs
+    // (block 6 at m = 10 is epoch 6), for the planned count and for a time budget (no plan).
+    for (std::uint64_t planned : {std::uint64_t{1024}, std::uint64_t{0}}) {
+        ZSobolSampler sampler;
+        sampler.plan_render(64, 64, planned);
+        for (std::uint64_t seed : {0ull, 77ull}) {
+            sampler.set_seed(seed);
+            for (std::uint32_t pixel : {0u, 1u, 4097u})
+                for (int m = 0; m <= 10; ++m)
+                    for (std::uint64_t block : {0ull, 1ull, 6ull}) {
+                        const std::uint64_t first = block << m, count = std::uint64_t{1} << m;
+                        for (Draw d : {Draw::Pixel, Draw::LightPosition1, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
+                            std::string what;
+                            const bool net = is_02_net(pixel_points(sampler, pixel, first, count, d), m, what);
+                            INFO("planned " << planned << ", seed " << seed << ", pixel " << pixel << ", m = " << m
+                                            << ", block " << block << ", draw " << static_cast<int>(d) << ": " << what);
+                            REQUIRE(net);
+                        }
+                        for (Draw d : {Draw::LightChoice1, Draw::Roulette3, Draw::BsdfLobe16}) {
+                            INFO("planned " << planned << ", seed " << seed << ", pixel " << pixel << ", m = " << m
+                                            << ", block " << block << ", 1D draw " << static_cast<int>(d));
+                            REQUIRE(is_01_net(pixel_values(sampler, pixel, first, count, d), m));
+                        }
+                    }
+        }
+    }
+}
+
+TEST_CASE("the zsobol sampler's aligned squares of 2^k x 2^k pixels are nets together", "[unit][ch09]") {
+    // With 2^L samples per pixel planned, the 4^k 2^L samples of an aligned square of 2^k x 2^k
+    // pixels are one block of the sequence: a (0, L + 2k, 2)-net in every 2D draw and a
+    // (0, L + 2k, 1)-net in every 1D one, and this is what makes the image's error blue noise.
+    // Odd and even L, squares in several places of the tile.
+    for (int L : {0, 3, 4}) {
+        ZSobolSampler sampler;
+        sampler.plan_render(64, 64, std::uint64_t{1} << L);
+        sampler.set_seed(static_cast<std::uint64_t>(L) + 5);
+        for (int k : {1, 2})
+            for (auto [x0, y0] : {std::pair{0, 0}, std::pair{4, 8}, std::pair{60, 36}}) {
+                const int side = 1 << k, m = L + 2 * k;
+                for (Draw d : {Draw::Pixel, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
+                    std::string what;
+                    const bool net = is_02_net(square_draws<Vec2>(sampler, x0, y0, side, std::uint64_t{1} << L, d, draw_2d), m, what);
+                    INFO("L = " << L << ", square of " << side << " at (" << x0 << ", " << y0 << "), draw "
+                                << static_cast<int>(d) << ": " << what);
+                    REQUIRE(net);
+                }
+                for (Draw d : {Draw::LightChoice1, Draw::Roulette3}) {
+                    INFO("L = " << L << ", square of " << side << " at (" << x0 << ", " << y0 << "), 1D draw "
+                                << static_cast<int>(d));
+                    REQUIRE(is_01_net(square_draws<float>(sampler, x0, y0, side, std::uint64_t{1} << L, d, draw_1d), m));
+                }
+            }
+    }
+}
+
+TEST_CASE("the zsobol sampler's scrambles make each point uniform and the dimensions independent", "[unit][ch09]") {
+    // Three chi-square tests of 4096 points in a 16 x 16 grid (255 degrees of freedom), each at
+    // unit_test_alpha: (1) one pixel's sample 3 over 4096 seeds: the randomization makes every
+    // point uniform; (2) vertex 2's light choice against vertex 5's roulette over those seeds: two
+    // dimensions are not tied; (3) within one pixel, 4096 samples' pixel x against vertex 1's
+    // light choice: the dimensions take the pixel's points in different orders.
+    ZSobolSampler sampler;
+    sampler.plan_render(64, 64, 4096);
+    std::vector<Vec2> over_seeds, two_dimensions, within_pixel;
+    for (std::uint64_t seed = 0; seed < 4096; ++seed) {
+        sampler.set_seed(seed);
+        sampler.start_pixel_sample(21, 9, 9 * 64 + 21, 3);
+        over_seeds.push_back(sampler.pixel_2d());
+        sampler.start_vertex(2);
+        const float choice = sampler.get_1d(VertexDimension::LightChoice);
+        sampler.start_vertex(5);
+        two_dimensions.emplace_back(choice, sampler.get_1d(VertexDimension::Roulette));
+    }
+    sampler.set_seed(3);
+    for (std::uint64_t i = 0; i < 4096; ++i) {
+        sampler.start_pixel_sample(7, 3, 199, i);
+        const float x = sampler.pixel_2d().x;
+        sampler.start_vertex(1);
+        within_pixel.emplace_back(x, sampler.get_1d(VertexDimension::LightChoice));
+    }
+    CHECK(uniform_grid_p_value(over_seeds, 16) > stats::unit_test_alpha);
+    CHECK(uniform_grid_p_value(two_dimensions, 16) > stats::unit_test_alpha);
+    CHECK(uniform_grid_p_value(within_pixel, 16) > stats::unit_test_alpha);
 }

@@ -4,6 +4,7 @@
 
 #include "freezeray/ch09/sobol_sampler.hpp"
 #include "freezeray/ch09/stratified_sampler.hpp"
+#include "freezeray/ch09/zsobol_sampler.hpp"
 
 namespace freezeray {
 
@@ -15,6 +16,10 @@ void register_chapter09(Registry& registry) {
                          "Sobol (0,2)-sequence per dimension pair, index shuffled and points Owen-scrambled by hashing "
                          "(Burley 2020), independent across pairs and pixels",
                          [](const Parameters&) { return std::make_unique<ch09::SobolSampler>(); });
+    registry.add_sampler("zsobol", 9,
+                         "Sobol over Morton-ordered pixels (Ahmed and Wonka 2020, pbrt-v4's ZSobol): neighbouring pixels take "
+                         "complementary blocks of one sequence, so the error is blue noise when --spp is known",
+                         [](const Parameters&) { return std::make_unique<ch09::ZSobolSampler>(); });
     registry.set_default_sampler("sobol");
 }
 

@@ -9,12 +9,6 @@
 
 namespace freezeray::ch09 {
 
-namespace {
-
-constexpr std::uint32_t QuasiRandomDimensions = CameraDimensions + DimensionsPerVertex * QuasiRandomVertices;
-
-}  // namespace
-
 void SobolSampler::begin(int, int, std::uint32_t pixel_index, std::uint64_t sample_index) {
     pixel_key_ = pixel_key(seed(), pixel_index, 0x5851f42d4c957f2dULL);
     sample_index_ = sample_index;

@@ -38,6 +38,11 @@ public:
     void set_seed(std::uint64_t seed) { seed_ = seed; }
     std::uint64_t seed() const { return seed_; }
 
+    // Told once before a render: the image's size and how many samples each pixel will get (0 when
+    // a time budget or a target error decides). Only a sampler that spreads a pixel's samples
+    // over its neighbours needs it (chapter 09's zsobol); the others ignore it.
+    virtual void plan_render(int /*width*/, int /*height*/, std::uint64_t /*samples_per_pixel*/) {}
+
     // Begins sample `sample_index` of pixel (x, y) (`pixel_index` = y * width + x). What is drawn
     // until the next call depends on the seed, the pixel, the sample index and the dimension
     // only, never on the thread or the order in which pixels are rendered.

@@ -11,6 +11,7 @@ namespace freezeray::ch09 {
 // Vertices up to this one draw quasi-random numbers; deeper ones, whose light is a small part of
 // the image and where stratification no longer shows, draw hashed independent numbers.
 constexpr int QuasiRandomVertices = 16;
+constexpr std::uint32_t QuasiRandomDimensions = CameraDimensions + DimensionsPerVertex * QuasiRandomVertices;
 
 // Every 1D or 2D draw is the first one or two dimensions of the Sobol sequence (which together
 // are a (0, 2)-sequence: every 2^m consecutive points from a multiple of 2^m stratify the
