@@ -11,6 +11,7 @@
 #include "freezeray/ch07/register_chapter07.hpp"
 #include "freezeray/ch08/register_chapter08.hpp"
 #include "freezeray/ch09/register_chapter09.hpp"
+#include "freezeray/ch10/register_chapter10.hpp"
 
 namespace freezeray {
 
@@ -24,7 +25,7 @@ struct Chapter {
 const Chapter chapters[] = {
     {1, register_chapter01}, {2, register_chapter02}, {3, register_chapter03}, {4, register_chapter04},
     {5, register_chapter05}, {6, register_chapter06}, {7, register_chapter07},
-    {8, register_chapter08}, {9, register_chapter09},
+    {8, register_chapter08}, {9, register_chapter09}, {10, register_chapter10},
 };
 
 }  // namespace

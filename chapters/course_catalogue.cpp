@@ -42,6 +42,10 @@ const std::vector<CatalogueEntry>& course_catalogue() {
         {CapabilityKind::Sampler, "independent", 1},
         {CapabilityKind::Sampler, "stratified", 9},
         {CapabilityKind::Sampler, "sobol", 9},
+        {CapabilityKind::Sampler, "zsobol", 9},
+        {CapabilityKind::LightSampler, "power", 3},
+        {CapabilityKind::LightSampler, "uniform", 3},
+        {CapabilityKind::LightSampler, "bvh", 10},
     };
     return catalogue;
 }

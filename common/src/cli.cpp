@@ -60,6 +60,14 @@ int run_info(const std::string& scene_path, const Registry& registry) {
         std::cout << "; the " << scene.emissive_triangles.size()
                   << " emissive triangles become area lights from chapter 03 on, which samples them";
     std::cout << "\n";
+    // How pt-nee and pt-mis choose lights here (chapters 03 and 10), built as a render builds it.
+    const std::string light_sampler =
+        !scene.defaults.light_sampler.empty() ? scene.defaults.light_sampler : registry.default_light_sampler();
+    if (!light_sampler.empty() && !scene.lights.empty()) {
+        const auto sampler = registry.make_light_sampler(light_sampler, scene.lights, scene.file + ": /render/light_sampler");
+        std::cout << "light sampler: " << light_sampler << "\n";
+        for (const std::string& line : sampler->description()) std::cout << "  " << line << "\n";
+    }
     std::cout << "accelerator: " << scene.accelerator_name << "\n";
     for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
     std::cout << "effects:\n" << scene.effects.describe();
@@ -166,6 +174,13 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--sampler", render.sampler,
                                "where the per-pixel integrators' numbers come from, one of: " + samplers +
                                    " (default: the scene's, else " + registry.default_sampler() + ")");
+    std::string light_samplers;
+    for (const auto& e : registry.list(CapabilityKind::LightSampler))
+        light_samplers += (light_samplers.empty() ? "" : ", ") + e.name;
+    if (!light_samplers.empty())
+        render_command->add_option("--light-sampler", render.light_sampler,
+                                   "how pt-nee and pt-mis choose the light to sample at a shading point, one of: " +
+                                       light_samplers + " (default: the scene's, else " + registry.default_light_sampler() + ")");
     render_command->add_option("--threads", render.threads, "threads (default: every core)");
     render_command->add_option("--seed", render.seed, "random seed (default: the scene's)");
     render_command->add_option("--max-depth", render.max_depth, "maximum path length in segments");
@@ -220,6 +235,11 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     compare_command->add_option("--sampler", compare.sampler,
                                 "the runs' sampler, one of: " + samplers + " (a run may name its own: pt-mis@sobol; default: the scene's, else " +
                                     registry.default_sampler() + ")");
+    if (!light_samplers.empty())
+        compare_command->add_option("--light-sampler", compare.light_sampler,
+                                    "the runs' light sampler, one of: " + light_samplers +
+                                        " (a run may name its own: pt-mis@bvh; default: the scene's, else " +
+                                        registry.default_light_sampler() + ")");
     compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
     compare_command->add_option("--seed", compare.seed,
                                 "random seed of the runs (default 0); a reference made with --make-reference gets another");

@@ -20,6 +20,7 @@ struct RenderOptions {
     double target_error = 0.0;
     std::string accelerator;  // empty: the scene's, else the renderer's default
     std::string sampler;      // empty: the scene's, else the renderer's default
+    std::string light_sampler;  // empty: the scene's, else the renderer's default
     int threads = 0;
     long long seed = -1;
     long long sample_offset = 0;
@@ -61,12 +62,27 @@ struct SamplerChoice {
     std::string name;
     std::shared_ptr<const Sampler> sampler;
 };
-// A comparison's run, "pt-mis" or "pt-mis@sobol": the integrator and the sampler (empty when
-// the run names none).
-std::pair<std::string, std::string> split_run_name(const std::string& run);
+// A comparison's run, "pt-mis", "pt-mis@sobol", "pt-mis@bvh" or "pt-mis@sobol@bvh": the
+// integrator, and the sampler and light sampler it names (each empty when the run names none).
+// Each name after an @ must be a registered sampler or light sampler (InputError otherwise).
+struct RunName {
+    std::string integrator, sampler, light_sampler;
+};
+RunName parse_run_name(const std::string& run, const Registry& registry);
 
 SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
                              const Integrator& integrator, const std::string& integrator_name, const Registry& registry);
+
+// The light sampler of a render, chosen as the sampler is and built over the scene's lights: a
+// named one is refused (InputError at `where`) for an integrator that does not choose lights at
+// shading points; for such an integrator, without a name, none (empty name, null sampler).
+struct LightSamplerChoice {
+    std::string name;
+    std::shared_ptr<const LightSampler> sampler;
+};
+LightSamplerChoice choose_light_sampler(const std::string& requested, const std::string& where, const Scene& scene,
+                                        const Integrator& integrator, const std::string& integrator_name,
+                                        const Registry& registry);
 
 // A warning for an integrator that cannot find the scene's point, spot and directional lights
 // (no ray can hit them), or an empty string.

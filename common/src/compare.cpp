@@ -112,13 +112,18 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
     std::vector<std::unique_ptr<Integrator>> integrators;
     std::vector<SamplerChoice> samplers;
+    std::vector<LightSamplerChoice> light_samplers;
     const auto options = integrator_options(scene, OptionValues{}, registry);  // the scene's "render" block
     for (const std::string& run_name : request.integrators) {
-        const auto [name, sampler] = split_run_name(run_name);
+        const RunName run = parse_run_name(run_name, registry);
+        const std::string& name = run.integrator;
         integrators.push_back(registry.make_integrator(name, settings, "--integrators", &options->parameters()));
-        samplers.push_back(choose_sampler(!sampler.empty() ? sampler : request.sampler,
-                                          !sampler.empty() ? "--integrators" : "--sampler", scene, *integrators.back(), name,
+        samplers.push_back(choose_sampler(!run.sampler.empty() ? run.sampler : request.sampler,
+                                          !run.sampler.empty() ? "--integrators" : "--sampler", scene, *integrators.back(), name,
                                           registry));
+        light_samplers.push_back(choose_light_sampler(!run.light_sampler.empty() ? run.light_sampler : request.light_sampler,
+                                                      !run.light_sampler.empty() ? "--integrators" : "--light-sampler", scene,
+                                                      *integrators.back(), name, registry));
         const std::string warning = unreachable_lights_warning(scene, *integrators.back(), name);
         if (!warning.empty() && !request.quiet) std::cerr << "warning: " << warning << "\n";
     }
@@ -162,6 +167,7 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
         run.integrator = request.integrators[i];
         RenderSettings run_settings = settings;
         run_settings.sampler = samplers[i].sampler;
+        run_settings.light_sampler = light_samplers[i].sampler;
         // At every pass boundary (1, 2, 4, ... spp) record the error so far, and that of the
         // pass's own samples (the film less the previous checkpoint's); this time is not counted
         // as render time.

@@ -47,7 +47,9 @@ int run_make_reference(const CompareRequest& request, double target_error, const
     render.scene = request.scene;
     // A reference's samples must be independent: compare checks its estimated relMSE (from the
     // per-pixel variance, which assumes them) and subtracts it from the runs' errors.
-    const auto [integrator, sampler] = split_run_name(request.integrators.front());
+    const RunName run = parse_run_name(request.integrators.front(), registry);
+    const std::string& integrator = run.integrator;
+    const std::string& sampler = run.sampler;
     const std::string named_sampler = !sampler.empty() ? sampler : request.sampler;
     if (!named_sampler.empty() && named_sampler != "independent")
         throw InputError(!sampler.empty() ? "--integrators" : "--sampler",
@@ -55,6 +57,7 @@ int run_make_reference(const CompareRequest& request, double target_error, const
                          "and subtracts from the runs' errors, assumes them (the " + named_sampler + " sampler's are not)");
     render.integrator = integrator;
     render.sampler = "independent";
+    render.light_sampler = !run.light_sampler.empty() ? run.light_sampler : request.light_sampler;
     render.time_seconds = request.time_seconds;
     render.spp = static_cast<long long>(request.samples_per_pixel);
     render.spp_given = request.samples_per_pixel > 0;

@@ -17,6 +17,7 @@ const char* capability_kind_name(CapabilityKind kind) {
         case CapabilityKind::Light: return "light";
         case CapabilityKind::TextureLayout: return "texture layout";
         case CapabilityKind::Sampler: return "sampler";
+        case CapabilityKind::LightSampler: return "light sampler";
     }
     return "capability";
 }
@@ -99,6 +100,11 @@ void Registry::add_sampler(const std::string& name, int chapter, const std::stri
     add_entry(samplers_, name, chapter, summary, std::move(f));
 }
 
+void Registry::add_light_sampler(const std::string& name, int chapter, const std::string& summary, LightSamplerFactory f) {
+    add_entry(light_samplers_, name, chapter, summary, std::move(f));
+    if (default_light_sampler_.empty()) default_light_sampler_ = name;
+}
+
 void Registry::add_option(OptionDeclaration option) {
     for (const OptionDeclaration& o : options_)
         if (o.flag == option.flag || (o.key == option.key && o.target == option.target))
@@ -129,6 +135,11 @@ void Registry::set_default_sampler(const std::string& name) {
     default_sampler_ = name;
 }
 
+void Registry::set_default_light_sampler(const std::string& name) {
+    if (!light_samplers_.count(name)) throw std::logic_error("default light sampler '" + name + "' is not registered");
+    default_light_sampler_ = name;
+}
+
 bool Registry::has(CapabilityKind kind, const std::string& name) const {
     switch (kind) {
         case CapabilityKind::Integrator: return integrators_.count(name) > 0;
@@ -137,6 +148,7 @@ bool Registry::has(CapabilityKind kind, const std::string& name) const {
         case CapabilityKind::Light: return lights_.count(name) > 0 || (name == "area" && area_light_.has_value());
         case CapabilityKind::TextureLayout: return texture_layouts_.count(name) > 0;
         case CapabilityKind::Sampler: return samplers_.count(name) > 0;
+        case CapabilityKind::LightSampler: return light_samplers_.count(name) > 0;
     }
     return false;  // not reached: every kind is handled above
 }
@@ -155,6 +167,7 @@ std::vector<Registry::Entry> Registry::list(CapabilityKind kind) const {
     if (kind == CapabilityKind::Accelerator) collect(accelerators_);
     if (kind == CapabilityKind::TextureLayout) collect(texture_layouts_);
     if (kind == CapabilityKind::Sampler) collect(samplers_);
+    if (kind == CapabilityKind::LightSampler) collect(light_samplers_);
     if (kind == CapabilityKind::Light) {
         collect(lights_);
         if (area_light_) entries.push_back(area_light_->first);
@@ -264,6 +277,14 @@ std::unique_ptr<Sampler> Registry::make_sampler(const std::string& name, const s
     const auto it = samplers_.find(name);
     if (it == samplers_.end()) unknown(CapabilityKind::Sampler, name, where);
     return it->second.second(options != nullptr ? *options : no_parameters());
+}
+
+std::unique_ptr<LightSampler> Registry::make_light_sampler(const std::string& name,
+                                                         const std::vector<std::unique_ptr<Light>>& lights,
+                                                         const std::string& where, const Parameters* options) const {
+    const auto it = light_samplers_.find(name);
+    if (it == light_samplers_.end()) unknown(CapabilityKind::LightSampler, name, where);
+    return it->second.second(lights, options != nullptr ? *options : no_parameters());
 }
 
 std::unique_ptr<Light> Registry::make_area_light(const TriangleMesh& mesh, std::uint32_t triangle,

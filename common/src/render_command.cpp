@@ -25,12 +25,28 @@ std::string unreachable_lights_warning(const Scene& scene, const Integrator& int
                   "and stay black (pt-nee and pt-mis sample them)";
 }
 
-std::pair<std::string, std::string> split_run_name(const std::string& run) {
-    const std::size_t at = run.find('@');
-    if (at == std::string::npos) return {run, ""};
-    if (at == 0 || at + 1 == run.size())
-        throw InputError("--integrators", "'" + run + "': write INTEGRATOR or INTEGRATOR@SAMPLER (pt-mis@sobol)");
-    return {run.substr(0, at), run.substr(at + 1)};
+RunName parse_run_name(const std::string& run, const Registry& registry) {
+    const std::string usage = "'" + run + "': write INTEGRATOR, INTEGRATOR@SAMPLER (pt-mis@sobol), INTEGRATOR@LIGHT_SAMPLER "
+                              "(pt-mis@bvh) or both (pt-mis@sobol@bvh)";
+    RunName name;
+    std::size_t at = run.find('@');
+    name.integrator = run.substr(0, at);
+    if (name.integrator.empty()) throw InputError("--integrators", usage);
+    while (at != std::string::npos) {
+        const std::size_t next = run.find('@', at + 1);
+        const std::string part = run.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1);
+        if (part.empty()) throw InputError("--integrators", usage);
+        if (registry.has(CapabilityKind::Sampler, part) && name.sampler.empty())
+            name.sampler = part;
+        else if (registry.has(CapabilityKind::LightSampler, part) && name.light_sampler.empty())
+            name.light_sampler = part;
+        else if (registry.has(CapabilityKind::Sampler, part) || registry.has(CapabilityKind::LightSampler, part))
+            throw InputError("--integrators", usage + ": a run names at most one of each");
+        else
+            registry.require(CapabilityKind::Sampler, part, "--integrators");  // names the chapter, or the nearest name
+        at = next;
+    }
+    return name;
 }
 
 SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
@@ -46,6 +62,22 @@ SamplerChoice choose_sampler(const std::string& requested, const std::string& wh
         name = "independent";
     }
     return {name, registry.make_sampler(name, at)};
+}
+
+LightSamplerChoice choose_light_sampler(const std::string& requested, const std::string& where, const Scene& scene,
+                                        const Integrator& integrator, const std::string& integrator_name,
+                                        const Registry& registry) {
+    const bool named = !requested.empty() || !scene.defaults.light_sampler.empty();
+    const std::string at = !requested.empty() ? where : scene.file + ": /render/light_sampler";
+    if (!integrator.chooses_lights_per_point()) {
+        if (!requested.empty())
+            throw InputError(at, integrator_name + " does not choose lights through a light sampler (pt-nee and pt-mis do; "
+                                 "light paths and bidirectional strategies choose by power everywhere)");
+        return {};  // a scene's default applies to the integrators that read it
+    }
+    const std::string name = named ? (!requested.empty() ? requested : scene.defaults.light_sampler) : registry.default_light_sampler();
+    if (name.empty()) return {};
+    return {name, registry.make_light_sampler(name, scene.lights, at)};
 }
 
 namespace {
@@ -113,6 +145,7 @@ Image annotated_image(const Film& film, const RenderStateInfo& info, double seco
     Image image = film.mean();
     image.metadata["freezeray:integrator"] = info.integrator;
     image.metadata["freezeray:sampler"] = info.sampler;
+    if (!info.light_sampler.empty()) image.metadata["freezeray:light_sampler"] = info.light_sampler;
     image.metadata["freezeray:scene"] = info.scene;
     image.metadata["freezeray:samples_per_pixel"] = std::to_string(film.minimum_sample_count());
     image.metadata["freezeray:seed"] = std::to_string(info.seed);
@@ -170,12 +203,20 @@ int run_render(const RenderOptions& options, const Registry& registry) {
 
     const SamplerChoice sampler = choose_sampler(options.sampler, "--sampler", scene, *integrator, integrator_name, registry);
     settings.sampler = sampler.sampler;
+    const LightSamplerChoice light_sampler =
+        choose_light_sampler(options.light_sampler, "--light-sampler", scene, *integrator, integrator_name, registry);
+    settings.light_sampler = light_sampler.sampler;
+    if (!options.quiet && light_sampler.sampler) {
+        std::string lines;
+        for (const std::string& line : light_sampler.sampler->description()) lines += (lines.empty() ? ": " : "; ") + line;
+        std::cerr << "light sampler: " << light_sampler.name << lines << "\n";
+    }
 
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after
     const RenderStateInfo info{options.scene,     integrator_name,       sampler.name,
                                settings.seed,     settings.first_sample, settings.max_depth,
-                               scene.camera->width(), scene.camera->height()};
+                               scene.camera->width(), scene.camera->height(), light_sampler.name};
     if (!options.resume.empty()) {
         if (!integrator->resumable())
             throw InputError("--resume", integrator_name + " cannot be resumed exactly (its film is not a per-pixel sample count that "

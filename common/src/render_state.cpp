@@ -18,7 +18,7 @@ namespace {
 nlohmann::json to_json(const RenderStateInfo& info) {
     return {{"scene", info.scene}, {"integrator", info.integrator}, {"sampler", info.sampler}, {"seed", info.seed},
             {"first_sample", info.first_sample}, {"max_depth", info.max_depth},
-            {"width", info.width}, {"height", info.height}};
+            {"width", info.width}, {"height", info.height}, {"light_sampler", info.light_sampler}};
 }
 
 }  // namespace
@@ -57,6 +57,7 @@ RenderState read_render_state(const std::string& path) {
         state.info.integrator = j.at("integrator").get<std::string>();
         state.info.seed = j.at("seed").get<std::uint64_t>();
         if (j.contains("sampler")) state.info.sampler = j.at("sampler").get<std::string>();
+        if (j.contains("light_sampler")) state.info.light_sampler = j.at("light_sampler").get<std::string>();
         state.info.first_sample = j.at("first_sample").get<std::uint64_t>();
         state.info.max_depth = j.at("max_depth").get<int>();
         state.info.width = j.at("width").get<int>();
@@ -78,6 +79,7 @@ void check_resumable(const RenderStateInfo& saved, const RenderStateInfo& wanted
     if (saved.scene != wanted.scene) differ("scene", saved.scene, wanted.scene);
     if (saved.integrator != wanted.integrator) differ("integrator", saved.integrator, wanted.integrator);
     if (saved.sampler != wanted.sampler) differ("sampler", saved.sampler, wanted.sampler);
+    if (saved.light_sampler != wanted.light_sampler) differ("light sampler", saved.light_sampler, wanted.light_sampler);
     if (saved.seed != wanted.seed) differ("seed", std::to_string(saved.seed), std::to_string(wanted.seed));
     if (saved.first_sample != wanted.first_sample)
         differ("sample offset", std::to_string(saved.first_sample), std::to_string(wanted.first_sample));

@@ -335,6 +335,9 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         scene.defaults.seed = static_cast<std::uint64_t>(r.get_int("seed", 0));
         scene.defaults.sampler = r.get_string("sampler", "");
         if (!scene.defaults.sampler.empty()) registry.require(CapabilityKind::Sampler, scene.defaults.sampler, r.where("sampler"));
+        scene.defaults.light_sampler = r.get_string("light_sampler", "");
+        if (!scene.defaults.light_sampler.empty())
+            registry.require(CapabilityKind::LightSampler, scene.defaults.light_sampler, r.where("light_sampler"));
         // The keys of the integrators' options go to the integrator's factory, which checks them.
         for (const OptionDeclaration& d : registry.options())
             if (d.target == OptionTarget::Integrator && r.has(d.key))

@@ -257,3 +257,29 @@ TEST_CASE("pt-nee and pt-mis agree on the Cornell box with a point light and a s
     // weighted differently by the two. Whole image and 8x8 blocks: 2 tests at 1e-5.
     require_pairwise_agreement("cornell-box/point-and-spot.json", {"pt-nee", "pt-mis"}, 441, 256, 32, 32, 64, {32, 8});
 }
+
+// Chapter 10's light BVH (`--light-sampler bvh`) chooses lights by what they can send to each
+// shading point; its probabilities enter the light samples and the MIS weights of emission found
+// by BSDF sampling, so a wrong probability anywhere is a bias these comparisons see.
+
+TEST_CASE("pt-mis with the light BVH agrees with pt-is on the Cornell box and on veach-mis", "[convergence][ch10]") {
+    // As the chapter 03 tests above: the Cornell box over 8x8 blocks, veach-mis over 16x16
+    // blocks: 2 tests at convergence_test_alpha.
+    require_pairwise_agreement("cornell-box/scene.json", {"pt-is", "pt-mis@bvh"}, 451, 1024, 32, 32, 64, {8});
+    require_pairwise_agreement("veach-mis/scene.json", {"pt-is", "pt-mis@bvh"}, 461, 1024, 96, 64, 8, {16});
+}
+
+TEST_CASE("pt-nee with the light BVH agrees with pt-mis on the Cornell box with a point light and a spot light",
+          "[convergence][ch10]") {
+    // Delta lights are found by light sampling alone, so the BVH's cones and bounds for point and
+    // spot lights decide the image: 8x8 blocks, 1 test at convergence_test_alpha.
+    require_pairwise_agreement("cornell-box/point-and-spot.json", {"pt-mis", "pt-nee@bvh"}, 471, 256, 32, 32, 64, {8});
+}
+
+TEST_CASE("pt-mis with the light BVH agrees with pt-mis choosing by power on a hall of 1,536 lamps", "[convergence][ch10]") {
+    // scenes/many-lights at 32x32, 512 spp, paths of at most 4 segments, 8x8 blocks: 1 test at
+    // convergence_test_alpha. Every pixel is lit by lamps a few metres away, which the BVH
+    // chooses far more often than power does: a probability wrong for nearby or far lamps would
+    // shift these blocks.
+    require_pairwise_agreement("many-lights/scene.json", {"pt-mis", "pt-mis@bvh"}, 481, 512, 32, 32, 4, {8});
+}

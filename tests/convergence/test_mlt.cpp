@@ -63,7 +63,7 @@ TEST_CASE("mlt's bootstrap estimate of b equals bdpt's mean image luminance with
     SceneLoadOptions options;
     options.width = options.height = 32;
     const Scene scene = load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry(), options);
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     ch05::MltSettings settings;
     settings.bootstrap_samples = 200000;
     const ch04::BidirectionalSettings bidirectional{64, ch03::MisHeuristic::Power, ""};

@@ -42,7 +42,7 @@ TEST_CASE("ch04/strategy-ratio", "[exercise]") {
     // Used by bdpt's weights: on 50 complete paths of the Cornell box, the weights of every
     // strategy sum to one and equal the power heuristic written out with the full densities.
     const Scene scene = load_cornell_box();
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     const int checked = testing::for_paths_ending_on_emitters(scene, lights, 50, 41, [&](const testing::FullPath& path) {
         const int n = static_cast<int>(path.x.size());
         double sum = 0.0;

@@ -50,7 +50,7 @@ TEST_CASE("mlt starts and lights the image when almost every bootstrap path carr
           "[stability][ch05]") {
     SceneLoadOptions options;
     const Scene scene = load_scene(hard_scene("near-closed-door/scene.json"), testing::full_registry(), options);
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     ch05::MltSettings settings;
     settings.bootstrap_samples = 20000;
     const ch05::Bootstrap bootstrap =

@@ -9,7 +9,7 @@ namespace freezeray::testing {
 
 using namespace freezeray::ch04;
 
-FullPath with_densities(const Scene& scene, const ch03::LightSampler& lights, std::vector<PathVertex> x,
+FullPath with_densities(const Scene& scene, const ch03::FixedLightSampler& lights, std::vector<PathVertex> x,
                         const PathVertex& light_end) {
     FullPath path{std::move(x), light_end, {}, {}};
     const int n = static_cast<int>(path.x.size());
@@ -31,7 +31,7 @@ bool has_strategy(const FullPath& path, int s) {
     return !path.x[t - 1].delta && !path.x[t].delta;
 }
 
-float weight_of(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+float weight_of(const Scene& scene, const ch03::FixedLightSampler& lights, ch03::MisHeuristic heuristic,
                 const FullPath& path, int s) {
     const int n = static_cast<int>(path.x.size());
     const int t = n - s;
@@ -83,7 +83,7 @@ bool densities_usable(const FullPath& path) {
     return true;
 }
 
-int for_paths_ending_on_emitters(const Scene& scene, const ch03::LightSampler& lights, int wanted, std::uint64_t seed,
+int for_paths_ending_on_emitters(const Scene& scene, const ch03::FixedLightSampler& lights, int wanted, std::uint64_t seed,
                                  const std::function<void(const FullPath&)>& check) {
     PCG32 random(seed, 7);
     IndependentSamples samples(random);

@@ -19,7 +19,7 @@ struct FullPath {
 
 // The densities of every vertex: from_camera[i] as sampled from x[i-1], from_light[i] from x[i+1]
 // (the light's origin and emission densities for the last two).
-FullPath with_densities(const Scene& scene, const ch03::LightSampler& lights, std::vector<ch04::PathVertex> x,
+FullPath with_densities(const Scene& scene, const ch03::FixedLightSampler& lights, std::vector<ch04::PathVertex> x,
                         const ch04::PathVertex& light_end);
 
 // True when bdpt has strategy s for this path: the connecting edge (x[t-1], x[t]) has no delta
@@ -27,7 +27,7 @@ FullPath with_densities(const Scene& scene, const ch03::LightSampler& lights, st
 bool has_strategy(const FullPath& path, int s);
 
 // The weight bdpt_mis_weight gives strategy s: the subpaths cut from the full path.
-float weight_of(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+float weight_of(const Scene& scene, const ch03::FixedLightSampler& lights, ch03::MisHeuristic heuristic,
                 const FullPath& path, int s);
 
 // The heuristic written out: p_s = product of the densities each vertex has under strategy s
@@ -41,7 +41,7 @@ bool densities_usable(const FullPath& path);
 // Camera subpaths of 3 to 6 vertices through random pixels of `scene`, kept when they end on an
 // emitter or escape to the environment; calls `check` on each complete path until `wanted` were
 // checked. Returns how many were.
-int for_paths_ending_on_emitters(const Scene& scene, const ch03::LightSampler& lights, int wanted, std::uint64_t seed,
+int for_paths_ending_on_emitters(const Scene& scene, const ch03::FixedLightSampler& lights, int wanted, std::uint64_t seed,
                                  const std::function<void(const FullPath&)>& check);
 
 }  // namespace freezeray::testing

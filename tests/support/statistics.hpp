@@ -16,7 +16,7 @@ namespace freezeray::stats {
 // says how many tests each label may hold before its share is spent.
 inline constexpr double suite_false_failure_budget = 1e-3;
 inline constexpr double chi_square_test_alpha = 1e-6;   // label chi2: up to 400 tests
-inline constexpr double convergence_test_alpha = 5e-6;  // label convergence: up to 80 tests
+inline constexpr double convergence_test_alpha = 2.5e-6;  // label convergence: up to 160 tests
 inline constexpr double exercise_test_alpha = 1e-6;     // label exercise: up to 100 tests
 inline constexpr double unit_test_alpha = 1e-6;         // label unit: up to 50 tests
 

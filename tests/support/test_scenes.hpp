@@ -30,9 +30,10 @@ std::string scene_load_error(const std::string& path, const Registry& registry =
 
 struct TestRender {
     std::string scene;             // path of the scene JSON
-    // An integrator, or "integrator@sampler" as compare's runs name it (pt-mis@sobol). Without a
-    // sampler, independent samples, whatever the course's default: the tests' per-pixel variances
-    // and error estimates assume them.
+    // An integrator, or "integrator@sampler" as compare's runs name it (pt-mis@sobol), or with a
+    // light sampler (pt-mis@bvh, pt-mis@sobol@bvh). Without a sampler, independent samples,
+    // whatever the course's default: the tests' per-pixel variances and error estimates assume
+    // them; without a light sampler, the integrator's own (chapter 03's by power).
     std::string integrator = "pt-naive";
     std::uint64_t samples_per_pixel = 16;
     std::uint64_t seed = 1;

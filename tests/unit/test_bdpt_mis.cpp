@@ -27,7 +27,7 @@ struct Checked {
 
 // Checks every strategy's weight of one path: they sum to one, and without delta vertices they
 // equal direct_weight.
-void check_path(const Scene& scene, const ch03::LightSampler& lights, const FullPath& path, Checked& checked) {
+void check_path(const Scene& scene, const ch03::FixedLightSampler& lights, const FullPath& path, Checked& checked) {
     const int n = static_cast<int>(path.x.size());
     bool any_delta = false;
     for (const PathVertex& v : path.x) any_delta = any_delta || v.delta;
@@ -53,7 +53,7 @@ void check_path(const Scene& scene, const ch03::LightSampler& lights, const Full
 // Complete paths that end on an emitter (or escape to the environment), from camera subpaths.
 Checked check_paths_ending_on_emitters(const std::string& scene_file, int wanted, std::uint64_t seed) {
     const Scene scene = load_scene(testing::scene_path(scene_file), testing::full_registry());
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     Checked checked;
     for_paths_ending_on_emitters(scene, lights, wanted, seed, [&](const FullPath& path) {
         check_path(scene, lights, path, checked);
@@ -65,7 +65,7 @@ Checked check_paths_ending_on_emitters(const std::string& scene_file, int wanted
 // delta-position light (point or spot) chosen by the light sampler.
 Checked check_paths_ending_on_delta_lights(const std::string& scene_file, int wanted, std::uint64_t seed) {
     const Scene scene = load_scene(testing::scene_path(scene_file), testing::full_registry());
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     PCG32 random(seed, 11);
     IndependentSamples samples(random);
     ScratchArena arena;

@@ -1,4 +1,4 @@
-// Chapter 03's light selection and MIS weights, checked exactly: LightSampler's probabilities
+// Chapter 03's light selection and MIS weights, checked exactly: FixedLightSampler's probabilities
 // by power and uniform, and the power and balance heuristics (Veach 1997, eqs. 9.4 and 9.13),
 // whose weights of the two strategies for one direction must sum to one (Veach's condition for
 // an unbiased combination, eq. 9.3), also on a real triangle light and Lambertian surface.
@@ -54,7 +54,7 @@ TEST_CASE("the light sampler chooses by power, never a dark light, and uniformly
     const std::vector<double> power{4.0, 0.0, 6.0, 5.0};  // in units of pi
     const double total = 15.0;
 
-    const LightSampler by_power(lights, LightSelection::Power);
+    const FixedLightSampler by_power(lights, LightSelection::Power);
     for (std::size_t i = 0; i < lights.size(); ++i)
         CHECK(by_power.probability(*lights[i]) == Approx(power[i] / total).epsilon(8.0 * float_epsilon).margin(1e-12));
     // A grid of u: the dark light never comes, each choice reports its probability, and each light
@@ -70,7 +70,7 @@ TEST_CASE("the light sampler chooses by power, never a dark light, and uniformly
     }
     for (std::size_t i = 0; i < lights.size(); ++i) CHECK(chosen[i] / double(n) == Approx(power[i] / total).margin(2e-5));
 
-    const LightSampler uniform(lights, LightSelection::Uniform);
+    const FixedLightSampler uniform(lights, LightSelection::Uniform);
     for (const auto& light : lights) CHECK(uniform.probability(*light) == 0.25f);
     CHECK(uniform.sample(0.3f)->light == lights[1].get());  // even the dark one
 
@@ -79,13 +79,13 @@ TEST_CASE("the light sampler chooses by power, never a dark light, and uniformly
     dark.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(0.0f)));
     dark.push_back(std::make_unique<TriangleLight>(mesh, 0, Spectrum(0.0f)));
     number(dark);
-    const LightSampler fallback(dark, LightSelection::Power);
+    const FixedLightSampler fallback(dark, LightSelection::Power);
     CHECK(fallback.probability(*dark[0]) == 0.5f);
     CHECK(fallback.sample(0.75f)->light == dark[1].get());
 
     // No light at all: nothing to choose.
     const std::vector<std::unique_ptr<Light>> none;
-    const LightSampler empty(none, LightSelection::Power);
+    const FixedLightSampler empty(none, LightSelection::Power);
     CHECK_FALSE(empty.sample(0.5f));
 }
 

@@ -311,7 +311,9 @@ TEST_CASE("block test detects a 2% bias in a 64-spp render", "[unit][statistics]
     const double shift = bias / std::sqrt(2.0 / (double(spp) * block * block));
     const double miss_probability = std::pow(1.0 - normal_test_power(shift, per_test_alpha), double(tests));
     INFO("per-block power " << normal_test_power(shift, per_test_alpha) << ", miss probability " << miss_probability);
-    CHECK(normal_test_power(shift, per_test_alpha) > 0.97);
+    // Per block 0.96 at convergence_test_alpha = 2.5e-6 (0.97 before chapter 10 halved it); what
+    // matters is that all 48 blocks together miss the bias with probability below 1e-6.
+    CHECK(normal_test_power(shift, per_test_alpha) > 0.95);
     CHECK(miss_probability < unit_test_alpha);  // so the assertion below fails falsely with p < 1e-6
 
     const SyntheticRender reference = synthetic_render(size, size, spp, 1.0, 1.0, 100);

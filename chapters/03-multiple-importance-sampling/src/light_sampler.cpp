@@ -16,18 +16,23 @@ std::vector<float> selection_weights(const std::vector<std::unique_ptr<Light>>& 
 
 }  // namespace
 
-LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights, LightSelection selection)
-    : lights_(lights), distribution_(lights.empty() ? std::vector<float>{0.0f} : selection_weights(lights, selection)) {}
+FixedLightSampler::FixedLightSampler(const std::vector<std::unique_ptr<Light>>& lights, LightSelection selection)
+    : lights_(lights), selection_(selection), distribution_(lights.empty() ? std::vector<float>{0.0f} : selection_weights(lights, selection)) {}
 
-std::optional<LightSampler::Choice> LightSampler::sample(float u) const {
+std::optional<LightChoice> FixedLightSampler::sample(float u) const {
     if (lights_.empty()) return std::nullopt;
     const std::size_t i = distribution_.sample_discrete(u);
-    return Choice{lights_[i].get(), distribution_.discrete_probability(i)};
+    return LightChoice{lights_[i].get(), distribution_.discrete_probability(i)};
 }
 
-float LightSampler::probability(const Light& light) const {
+float FixedLightSampler::probability(const Light& light) const {
     if (lights_.empty()) return 0.0f;
     return distribution_.discrete_probability(light.index);
+}
+
+std::vector<std::string> FixedLightSampler::description() const {
+    return {selection_ == LightSelection::Power ? "in proportion to power, the same at every point"
+                                                : "uniformly, the same at every point"};
 }
 
 }  // namespace freezeray::ch03

@@ -14,6 +14,7 @@ struct PreviousBounce {
     bool specular = true;   // a delta lobe (or the camera): light sampling could not have found this emission
     float bsdf_pdf = 0.0f;  // solid-angle density of the sampled direction
     Vec3 position{0.0f};    // where the bounce happened
+    Vec3 normal{0.0f};      // its shading normal (the light sampler's shading point)
 };
 
 }  // namespace
@@ -23,7 +24,9 @@ LightSamplingPathTracer::LightSamplingPathTracer(const LightSamplingSettings& se
 }
 
 RenderResult LightSamplingPathTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
-    const LightSampler lights(scene.lights, settings_.selection);
+    // The render's light sampler (`--light-sampler`), else this integrator's own.
+    const FixedLightSampler own(scene.lights, settings_.selection);
+    const LightSampler& lights = settings.light_sampler && !settings_.selection_fixed ? *settings.light_sampler : own;
     return render_pixels(scene, settings, progress, [&](const Ray& ray, Sampler& sampler, ScratchArena& arena) {
         return li(ray, scene, lights, sampler, arena);
     });
@@ -37,7 +40,7 @@ static Spectrum sample_one_light(const Hit& hit, const Frame& frame, const Vec3&
                                  Sampler& sampler) {
     const float u_select = sampler.get_1d(VertexDimension::LightChoice);
     const Vec2 u_light = sampler.get_2d(VertexDimension::LightPosition);
-    const std::optional<LightSampler::Choice> choice = lights.sample(u_select);
+    const std::optional<LightChoice> choice = lights.sample(ShadingPoint{hit.position, hit.shading_normal}, u_select);
     if (!choice) return Spectrum(0.0f);
     const std::optional<LightSample> sample = choice->light->sample_li(hit.position, u_light);
     if (!sample || sample->pdf <= 0.0f || is_black(sample->radiance)) return Spectrum(0.0f);
@@ -63,8 +66,10 @@ static Spectrum sample_one_light(const Hit& hit, const Frame& frame, const Vec3&
 static float emission_weight(const PreviousBounce& previous, const Light* light, const Vec3& wi,
                              const LightSampler& lights, const LightSamplingSettings& settings) {
     if (previous.specular || light == nullptr) return 1.0f;
-    const float probability = lights.probability(*light);
-    if (probability == 0.0f) return 1.0f;  // never chosen (its power rounds to zero): only BSDF sampling finds it
+    const float probability = lights.probability(ShadingPoint{previous.position, previous.normal}, *light);
+    // Never chosen here (its power rounds to zero, or the light sampler knows it sends no light
+    // to this point): only BSDF sampling finds it.
+    if (probability == 0.0f) return 1.0f;
     if (settings.combination == Combination::NextEventEstimation) return 0.0f;
     const float light_pdf = probability * light->pdf_li(previous.position, wi);
     return mis_weight(settings.heuristic, previous.bsdf_pdf, light_pdf);
@@ -109,7 +114,7 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
         if (!sample || sample->pdf <= 0.0f) break;
         throughput *= sample->weight();
         if (is_black(throughput)) break;
-        previous = {has_flag(sample->flags, BSDF_Specular), sample->pdf, hit->position};
+        previous = {has_flag(sample->flags, BSDF_Specular), sample->pdf, hit->position, hit->shading_normal};
 
         if (segments >= ch02::RussianRouletteStart) {
             const float q = ch02::russian_roulette_continue_probability(throughput);

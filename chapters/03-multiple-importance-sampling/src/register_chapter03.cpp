@@ -41,15 +41,25 @@ void register_chapter03(Registry& registry) {
     using ch03::LightSelection;
     using ch03::MisHeuristic;
     add_path_tracer(registry, "pt-nee", "path tracing with next-event estimation (one light sample per vertex, lights chosen by power)",
-                    {Combination::NextEventEstimation, MisHeuristic::Power, LightSelection::Power, 0});
+                    {Combination::NextEventEstimation, MisHeuristic::Power, LightSelection::Power, false, 0});
     add_path_tracer(registry, "pt-nee-uniform", "pt-nee choosing lights uniformly instead of by power",
-                    {Combination::NextEventEstimation, MisHeuristic::Power, LightSelection::Uniform, 0});
+                    {Combination::NextEventEstimation, MisHeuristic::Power, LightSelection::Uniform, true, 0});
     add_path_tracer(registry, "pt-mis", "path tracing combining light and BSDF sampling by MIS (power heuristic)",
-                    {Combination::MultipleImportanceSampling, MisHeuristic::Power, LightSelection::Power, 0});
+                    {Combination::MultipleImportanceSampling, MisHeuristic::Power, LightSelection::Power, false, 0});
     add_path_tracer(registry, "pt-mis-balance", "pt-mis with the balance heuristic",
-                    {Combination::MultipleImportanceSampling, MisHeuristic::Balance, LightSelection::Power, 0});
+                    {Combination::MultipleImportanceSampling, MisHeuristic::Balance, LightSelection::Power, false, 0});
     add_path_tracer(registry, "pt-mis-uniform", "pt-mis choosing lights uniformly instead of by power",
-                    {Combination::MultipleImportanceSampling, MisHeuristic::Power, LightSelection::Uniform, 0});
+                    {Combination::MultipleImportanceSampling, MisHeuristic::Power, LightSelection::Uniform, true, 0});
+
+    // Light samplers for pt-nee and pt-mis (`--light-sampler`); power is the default.
+    registry.add_light_sampler("power", 3, "in proportion to each light's power, the same at every shading point",
+                               [](const std::vector<std::unique_ptr<Light>>& lights, const Parameters&) {
+                                   return std::make_unique<ch03::FixedLightSampler>(lights, LightSelection::Power);
+                               });
+    registry.add_light_sampler("uniform", 3, "every light with the same probability, at every shading point",
+                               [](const std::vector<std::unique_ptr<Light>>& lights, const Parameters&) {
+                                   return std::make_unique<ch03::FixedLightSampler>(lights, LightSelection::Uniform);
+                               });
 }
 
 }  // namespace freezeray

@@ -15,7 +15,7 @@ double next_strategy_ratio(double ratio, float pdf_reverse, float pdf_forward) {
 // END BOOK
 
 // BOOK(bdpt-mis-weight)
-float bdpt_mis_weight(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+float bdpt_mis_weight(const Scene& scene, const ch03::FixedLightSampler& lights, ch03::MisHeuristic heuristic,
                       const PathVertex* light, int s, const PathVertex* camera, int t, const PathVertex* sampled) {
     // The vertices on either side of the connecting edge, and their predecessors.
     const PathVertex* pt = (t == 1 && sampled != nullptr) ? sampled : &camera[t - 1];

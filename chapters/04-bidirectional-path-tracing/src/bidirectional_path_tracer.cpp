@@ -13,7 +13,7 @@
 namespace freezeray::ch04 {
 
 // BOOK(connect-strategy)
-StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+StrategyContribution connect_strategy(const Scene& scene, const ch03::FixedLightSampler& lights, ch03::MisHeuristic heuristic,
                                       const PathVertex* light, int s, const PathVertex* camera, int t,
                                       SampleStream& samples) {
     StrategyContribution result;
@@ -55,7 +55,7 @@ StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampl
         const float u_select = samples.next_float();
         const Vec2 u_light(samples.next_float(), samples.next_float());
         if (!pt.connectible()) return result;
-        const std::optional<ch03::LightSampler::Choice> choice = lights.sample(u_select);
+        const std::optional<ch03::FixedLightSampler::Choice> choice = lights.sample(u_select);
         if (!choice || choice->probability <= 0.0f) return result;
         const std::optional<LightSample> light_sample = choice->light->sample_li(pt.position, u_light);
         if (!light_sample || light_sample->pdf <= 0.0f || is_black(light_sample->radiance)) return result;
@@ -92,7 +92,7 @@ BidirectionalPathTracer::BidirectionalPathTracer(const BidirectionalSettings& se
 }
 
 // BOOK(bidirectional-sample)
-void bidirectional_sample(const Scene& scene, const ch03::LightSampler& lights, const BidirectionalSettings& settings,
+void bidirectional_sample(const Scene& scene, const ch03::FixedLightSampler& lights, const BidirectionalSettings& settings,
                           const Vec2& film, SampleStream& samples, ScratchArena& arena, SubpathStorage& storage,
                           const std::function<void(const BidirectionalContribution&)>& record) {
     // A path of max_depth segments has max_depth + 1 vertices: all of them on the camera side
@@ -120,7 +120,7 @@ void bidirectional_sample(const Scene& scene, const ch03::LightSampler& lights, 
 
 // BOOK(bdpt-render)
 RenderResult BidirectionalPathTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     const PinholeCamera& pinhole = *scene.camera;
     const StrategyLayers layers(settings_.max_depth);
     const bool strategy_images = !settings_.strategy_images_folder.empty();

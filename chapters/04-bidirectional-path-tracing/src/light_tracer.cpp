@@ -79,7 +79,7 @@ LightTracer::LightTracer(const LightTracingSettings& settings) : settings_(setti
 }
 
 RenderResult LightTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     return render_light_paths(scene, settings, progress,
                               [&](std::uint32_t, PCG32& random, ScratchArena& arena, SplatBuffer& splats) {
                                   trace_light_path(scene, lights, random, arena, splats);
@@ -87,10 +87,10 @@ RenderResult LightTracer::render(const Scene& scene, const RenderSettings& setti
 }
 
 // BOOK(trace-light-path)
-void LightTracer::trace_light_path(const Scene& scene, const ch03::LightSampler& lights, PCG32& random,
+void LightTracer::trace_light_path(const Scene& scene, const ch03::FixedLightSampler& lights, PCG32& random,
                                    ScratchArena& arena, SplatBuffer& splats) const {
     // Choose a light by power and a ray leaving it (chapter 03's sample_le).
-    const std::optional<ch03::LightSampler::Choice> choice = lights.sample(random.next_float());
+    const std::optional<ch03::FixedLightSampler::Choice> choice = lights.sample(random.next_float());
     if (!choice || choice->probability <= 0.0f) return;
     const Vec2 u_position(random.next_float(), random.next_float());
     const Vec2 u_direction(random.next_float(), random.next_float());

@@ -65,7 +65,7 @@ float light_pdf(const PathVertex& v, const PathVertex& next) {
     return pdf;
 }
 
-float light_origin_pdf(const ch03::LightSampler& lights, const PathVertex& v, const PathVertex& next) {
+float light_origin_pdf(const ch03::FixedLightSampler& lights, const PathVertex& v, const PathVertex& next) {
     if (v.light == nullptr) return 0.0f;
     const float choice = lights.probability(*v.light);
     const Vec3 w = separation(v, next).direction;  // the direction light travels

@@ -113,11 +113,11 @@ int camera_subpath(const Scene& scene, const Ray& camera_ray, SampleStream& samp
 // END BOOK
 
 // BOOK(light-subpath)
-int light_subpath(const Scene& scene, const ch03::LightSampler& lights, SampleStream& samples, ScratchArena& arena,
+int light_subpath(const Scene& scene, const ch03::FixedLightSampler& lights, SampleStream& samples, ScratchArena& arena,
                   int max_vertices, PathVertex* path) {
     if (max_vertices <= 0) return 0;
     samples.start_stream(LightStream);
-    const std::optional<ch03::LightSampler::Choice> choice = lights.sample(samples.next_float());
+    const std::optional<ch03::FixedLightSampler::Choice> choice = lights.sample(samples.next_float());
     const Vec2 u_position(samples.next_float(), samples.next_float());
     const Vec2 u_direction(samples.next_float(), samples.next_float());
     if (!choice || choice->probability <= 0.0f) return 0;

@@ -63,7 +63,7 @@ Vec2 start_path(const Scene& scene, PrimarySamples& samples, ScratchArena& arena
 }
 
 // BOOK(evaluate-path)
-void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
+void evaluate_path(const Scene& scene, const ch03::FixedLightSampler& lights, const ch04::BidirectionalSettings& settings,
                    PrimarySamples& samples, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out) {
     const Vec2 film = start_path(scene, samples, arena, out);
     ch04::bidirectional_sample(scene, lights, settings, film, samples, arena, storage,
@@ -80,7 +80,7 @@ void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const c
 // END BOOK
 
 // BOOK(bootstrap)
-Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& bidirectional,
+Bootstrap run_bootstrap(const Scene& scene, const ch03::FixedLightSampler& lights, const ch04::BidirectionalSettings& bidirectional,
                         const MltSettings& settings, std::uint64_t seed, int threads) {
     Bootstrap result;
     threads = resolve_thread_count(threads);
@@ -155,7 +155,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
                                      "again with another --seed and `merge` the two renders");
     const MltSettings& mlt = settings_;
 
-    const ch03::LightSampler lights(scene.lights, ch03::LightSelection::Power);
+    const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     const ch04::BidirectionalSettings bidirectional{mlt.max_depth, ch03::MisHeuristic::Power, ""};
     const PinholeCamera& camera = *scene.camera;
     const int width = camera.width(), height = camera.height();

@@ -10,7 +10,7 @@
 namespace freezeray::ch05 {
 
 // BOOK(multiplexed-path)
-void evaluate_multiplexed_path(const Scene& scene, const ch03::LightSampler& lights,
+void evaluate_multiplexed_path(const Scene& scene, const ch03::FixedLightSampler& lights,
                                const ch04::BidirectionalSettings& settings, int segments, PrimarySamples& samples,
                                ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out) {
     const Vec2 film = start_path(scene, samples, arena, out);

@@ -153,8 +153,9 @@ class Registry;
 // What `compare` is asked to do (plain data, parsed in cli.cpp).
 struct CompareRequest {
     std::string scene;
-    std::vector<std::string> integrators;  // "pt-mis", or "pt-mis@sobol" with its own sampler
+    std::vector<std::string> integrators;  // "pt-mis", or "pt-mis@sobol", "pt-mis@bvh", "pt-mis@sobol@bvh"
     std::string sampler;                   // the runs' sampler where they name none (empty: the default)
+    std::string light_sampler;             // the runs' light sampler where they name none (empty: the default)
     double time_seconds = 0.0;           // > 0: equal time
     std::uint64_t samples_per_pixel = 0; // > 0: equal samples (when no time is given)
     std::string reference;               // optional reference image

@@ -3,6 +3,7 @@
 
 #include "freezeray/film.hpp"
 #include "freezeray/image.hpp"
+#include "freezeray/light_sampler.hpp"
 #include "freezeray/ray.hpp"
 #include "freezeray/sampler.hpp"
 #include "freezeray/scratch_arena.hpp"
@@ -47,6 +48,9 @@ struct RenderSettings {
     // Where the per-pixel integrators' numbers come from (chapter 09's `--sampler`); each thread
     // renders with its own clone. Null: the independent sampler.
     std::shared_ptr<const Sampler> sampler;
+    // How lights are chosen at shading points (`--light-sampler`: chapter 03's power or uniform,
+    // chapter 10's bvh), built over the scene's lights. Null: the integrator's own choice.
+    std::shared_ptr<const LightSampler> light_sampler;
 };
 
 struct RenderResult {
@@ -90,6 +94,11 @@ public:
     // loop, render_pixels); the others (light paths, Markov chains) use their own streams, and
     // `--sampler` other than independent is refused for them.
     virtual bool draws_from_sampler() const { return false; }
+
+    // True when the integrator chooses a light at each shading point through
+    // RenderSettings::light_sampler (chapter 03's pt-nee and pt-mis); the others refuse a named
+    // `--light-sampler`.
+    virtual bool chooses_lights_per_point() const { return false; }
 };
 
 // One sample of the radiance arriving along a camera ray. All randomness from `sampler`, which

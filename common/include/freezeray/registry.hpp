@@ -6,6 +6,7 @@
 #include "freezeray/accelerator.hpp"
 #include "freezeray/integrator.hpp"
 #include "freezeray/light.hpp"
+#include "freezeray/light_sampler.hpp"
 #include "freezeray/material.hpp"
 #include "freezeray/mesh.hpp"
 #include "freezeray/options.hpp"
@@ -60,12 +61,13 @@ using AreaLightFactory =
     std::function<std::unique_ptr<Light>(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission)>;
 
 // The kinds of things the registry names.
-enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout, Sampler };
+enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout, Sampler, LightSampler };
 // Every kind, in the order above: a loop over the registry's contents uses this list, so a new
 // kind cannot be forgotten there.
 inline constexpr CapabilityKind all_capability_kinds[] = {CapabilityKind::Integrator,   CapabilityKind::Material,
                                                          CapabilityKind::Accelerator,  CapabilityKind::Light,
-                                                         CapabilityKind::TextureLayout, CapabilityKind::Sampler};
+                                                         CapabilityKind::TextureLayout, CapabilityKind::Sampler,
+                                                         CapabilityKind::LightSampler};
 const char* capability_kind_name(CapabilityKind kind);
 
 // One line of a course's table of contents: the chapter that introduces a named capability.
@@ -98,6 +100,10 @@ public:
     void add_texture_layout(const std::string& name, int chapter, const std::string& summary,
                             TextureLayoutFactory factory);
     void add_sampler(const std::string& name, int chapter, const std::string& summary, SamplerFactory factory);
+    // How the light-sampling integrators choose a light at a shading point (chapter 03's power
+    // and uniform, chapter 10's bvh). The first one registered is the default until a chapter
+    // says otherwise.
+    void add_light_sampler(const std::string& name, int chapter, const std::string& summary, LightSamplerFactory factory);
     // A command-line option of a chapter's capability (options.hpp). Its flag must be new.
     void add_option(OptionDeclaration option);
     // A later chapter's capability that reads an option declared before it (chapter 07's
@@ -113,6 +119,9 @@ public:
     // chapter 09 says otherwise.
     void set_default_sampler(const std::string& name);
     const std::string& default_sampler() const { return default_sampler_; }
+    void set_default_light_sampler(const std::string& name);
+    // Empty before chapter 03 (no light is sampled).
+    const std::string& default_light_sampler() const { return default_light_sampler_; }
     const std::string& default_accelerator() const { return default_accelerator_; }
     const std::string& default_texture_layout() const { return default_texture_layout_; }
 
@@ -139,6 +148,10 @@ public:
     std::unique_ptr<Light> make_light(const std::string& type, const Parameters& parameters) const;
     std::unique_ptr<Sampler> make_sampler(const std::string& name, const std::string& where,
                                           const Parameters* options = nullptr) const;
+    // A light sampler over `lights` (which must outlive it); an unknown name is an InputError at
+    // `where`. `options` may be null: its defaults.
+    std::unique_ptr<LightSampler> make_light_sampler(const std::string& name, const std::vector<std::unique_ptr<Light>>& lights,
+                                                     const std::string& where, const Parameters* options = nullptr) const;
     // Null when no chapter registered area lights.
     std::unique_ptr<Light> make_area_light(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission) const;
 
@@ -179,10 +192,12 @@ private:
     std::optional<std::pair<Entry, AreaLightFactory>> area_light_;
     std::map<std::string, std::pair<Entry, TextureLayoutFactory>> texture_layouts_;
     std::map<std::string, std::pair<Entry, SamplerFactory>> samplers_;
+    std::map<std::string, std::pair<Entry, LightSamplerFactory>> light_samplers_;
     std::vector<OptionDeclaration> options_;
     std::string default_accelerator_ = "bruteforce";
     std::string default_texture_layout_;
     std::string default_sampler_ = "independent";
+    std::string default_light_sampler_;
     const std::vector<CatalogueEntry>* catalogue_ = nullptr;
 };
 

@@ -18,6 +18,9 @@ struct RenderStateInfo {
     std::uint64_t first_sample = 0;
     int max_depth = 0;
     int width = 0, height = 0;
+    // Chapters 03 and 10; empty for an integrator that chooses no light at shading points (and in
+    // states written before light samplers were named).
+    std::string light_sampler;
 };
 
 struct RenderState {
@@ -33,7 +36,7 @@ void write_render_state(const std::string& path, const RenderStateInfo& info, co
 RenderState read_render_state(const std::string& path);
 
 // Throws InputError("--resume", ...) unless `saved` describes the same render as `wanted`
-// (scene, integrator, sampler, seed, sample offset, depth and size).
+// (scene, integrator, sampler, light sampler, seed, sample offset, depth and size).
 void check_resumable(const RenderStateInfo& saved, const RenderStateInfo& wanted);
 
 // Combines two films of the same image made from disjoint samples: per pixel, the means are

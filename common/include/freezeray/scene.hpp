@@ -31,6 +31,7 @@ struct RenderDefaults {
     int max_depth = 0;               // 0: the integrator's default
     std::uint64_t seed = 0;
     std::string sampler;             // empty: the renderer's default (chapter 09's `--sampler`)
+    std::string light_sampler;       // empty: the renderer's default (`--light-sampler`, chapters 03 and 10)
     // The block's keys that registered integrator options read: the integrator's factory reads
     // and checks them (integrator_options below).
     nlohmann::json integrator_options = nlohmann::json::object();

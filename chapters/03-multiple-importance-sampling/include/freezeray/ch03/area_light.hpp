@@ -5,6 +5,8 @@
 #include "freezeray/light.hpp"
 #include "freezeray/mesh.hpp"
 
+#include <array>
+
 namespace freezeray::ch03 {
 
 // Converts a density over the light's area to a density over solid angle as seen from the
@@ -24,6 +26,8 @@ public:
 
     float area() const { return area_; }
     const Vec3& normal() const { return normal_; }
+    std::array<Vec3, 3> vertices() const { return {p0_, p1_, p2_}; }
+    const Spectrum& emission() const { return emission_; }  // radiance, on the normal's side
 
 private:
     Vec3 p0_, p1_, p2_;

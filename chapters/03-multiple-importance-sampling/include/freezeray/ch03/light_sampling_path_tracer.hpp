@@ -20,7 +20,10 @@ enum class Combination {
 struct LightSamplingSettings {
     Combination combination = Combination::MultipleImportanceSampling;
     MisHeuristic heuristic = MisHeuristic::Power;
+    // The light sampler when the render names none (RenderSettings::light_sampler); the
+    // `-uniform` variants fix it.
     LightSelection selection = LightSelection::Power;
+    bool selection_fixed = false;
     int max_depth = 0;  // segments; 0: chapter 02's default
 };
 
@@ -31,6 +34,7 @@ public:
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
     bool draws_from_sampler() const override { return true; }
     bool samples_lights() const override { return true; }
+    bool chooses_lights_per_point() const override { return !settings_.selection_fixed; }
 
     // One sample of the radiance arriving along `ray`.
     Spectrum li(const Ray& ray, const Scene& scene, const LightSampler& lights, Sampler& sampler, ScratchArena& arena) const;

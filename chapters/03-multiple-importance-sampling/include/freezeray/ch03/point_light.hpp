@@ -21,6 +21,9 @@ public:
     EmissionDensity pdf_le(const Ray& ray, const Vec3& normal) const override;
     Spectrum power() const override { return 4.0f * Pi * intensity_; }
 
+    const Vec3& position() const { return position_; }
+    const Spectrum& intensity() const { return intensity_; }
+
 private:
     Vec3 position_;
     Spectrum intensity_;

@@ -25,6 +25,12 @@ public:
     // The fraction of I sent in a direction whose angle to the axis has cosine cos_theta.
     float falloff(float cos_theta) const;
 
+    const Vec3& position() const { return position_; }
+    const Vec3& axis() const { return frame_.n; }
+    const Spectrum& intensity() const { return intensity_; }
+    float cos_cone() const { return cos_cone_; }
+    float cos_falloff_start() const { return cos_falloff_start_; }
+
 private:
     Vec3 position_;
     Frame frame_;  // +z along the axis

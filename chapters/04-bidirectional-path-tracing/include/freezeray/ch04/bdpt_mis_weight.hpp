@@ -21,7 +21,7 @@ double next_strategy_ratio(double ratio, float pdf_reverse, float pdf_forward);
 // recomputed here (they depend on the other subpath) without changing the arrays.
 // Only strategies that this chapter's bdpt implements are counted (s = 1, t = 1 only for area
 // lights), so the weights of every strategy of one path sum to one.
-float bdpt_mis_weight(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+float bdpt_mis_weight(const Scene& scene, const ch03::FixedLightSampler& lights, ch03::MisHeuristic heuristic,
                       const PathVertex* light, int s, const PathVertex* camera, int t, const PathVertex* sampled);
 
 }  // namespace freezeray::ch04

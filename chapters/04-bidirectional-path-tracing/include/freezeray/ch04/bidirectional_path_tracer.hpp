@@ -30,7 +30,7 @@ struct StrategyContribution {
 // (Veach 1997, section 10.2): s = 0 uses emission found by the camera subpath, s = 1 samples a
 // point on a light, t = 1 connects to the camera (through its importance), others connect the
 // two end vertices deterministically. Uses random numbers only for s = 1.
-StrategyContribution connect_strategy(const Scene& scene, const ch03::LightSampler& lights, ch03::MisHeuristic heuristic,
+StrategyContribution connect_strategy(const Scene& scene, const ch03::FixedLightSampler& lights, ch03::MisHeuristic heuristic,
                                       const PathVertex* light, int s, const PathVertex* camera, int t,
                                       SampleStream& samples);
 
@@ -65,7 +65,7 @@ struct SubpathStorage {
 // segments; `record` receives each non-zero contribution. The caller has started CameraStream
 // (and drawn the film position from it); the light subpath and the connections use their own
 // streams. Chapter 05's Metropolis light transport drives this same function.
-void bidirectional_sample(const Scene& scene, const ch03::LightSampler& lights, const BidirectionalSettings& settings,
+void bidirectional_sample(const Scene& scene, const ch03::FixedLightSampler& lights, const BidirectionalSettings& settings,
                           const Vec2& film, SampleStream& samples, ScratchArena& arena, SubpathStorage& storage,
                           const std::function<void(const BidirectionalContribution&)>& record);
 

@@ -68,7 +68,7 @@ public:
     bool resumable() const override { return false; }
 
     // Traces one light path and splats its connections to the camera into `splats`.
-    void trace_light_path(const Scene& scene, const ch03::LightSampler& lights, PCG32& random, ScratchArena& arena,
+    void trace_light_path(const Scene& scene, const ch03::FixedLightSampler& lights, PCG32& random, ScratchArena& arena,
                           SplatBuffer& splats) const;
 
 private:

@@ -81,7 +81,7 @@ float light_pdf(const PathVertex& v, const PathVertex& next);
 
 // The density with which a light subpath starts at `v` (light choice times the position's
 // area density; for a light at infinity, light choice times the direction's solid-angle density).
-float light_origin_pdf(const ch03::LightSampler& lights, const PathVertex& v, const PathVertex& next);
+float light_origin_pdf(const ch03::FixedLightSampler& lights, const PathVertex& v, const PathVertex& next);
 
 // The radiance `v` emits towards `next` (an emitting surface, or the environment).
 Spectrum vertex_le(const Scene& scene, const PathVertex& v, const PathVertex& next);

@@ -25,7 +25,7 @@ int camera_subpath(const Scene& scene, const Ray& camera_ray, SampleStream& samp
 // Traces a light subpath into path[0 .. max_vertices): a light chosen by `lights`, a point and
 // direction from its sample_le, then BSDF sampling with the adjoint BSDF, all from LightStream.
 // Returns the count.
-int light_subpath(const Scene& scene, const ch03::LightSampler& lights, SampleStream& samples, ScratchArena& arena,
+int light_subpath(const Scene& scene, const ch03::FixedLightSampler& lights, SampleStream& samples, ScratchArena& arena,
                   int max_vertices, PathVertex* path);
 
 }  // namespace freezeray::ch04

@@ -48,14 +48,14 @@ Vec2 start_path(const Scene& scene, PrimarySamples& samples, ScratchArena& arena
 
 // Evaluates the bidirectional sample that `samples` describes: the film position from the first
 // two numbers of the camera stream (anywhere on the film), then chapter 04's bidirectional_sample.
-void evaluate_path(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& settings,
+void evaluate_path(const Scene& scene, const ch03::FixedLightSampler& lights, const ch04::BidirectionalSettings& settings,
                    PrimarySamples& samples, ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out);
 
 // Multiplexed MLT's state (Hachisuka et al. 2014; pbrt-v3, section 16.4): a path of `segments`
 // segments made by one strategy (s, t), s chosen by the camera stream's third number; its
 // contribution is that strategy's MIS-weighted estimate divided by the probability 1 / (segments
 // + 1) of choosing it. Nothing when the subpaths do not reach the lengths the strategy needs.
-void evaluate_multiplexed_path(const Scene& scene, const ch03::LightSampler& lights,
+void evaluate_multiplexed_path(const Scene& scene, const ch03::FixedLightSampler& lights,
                                const ch04::BidirectionalSettings& settings, int segments, PrimarySamples& samples,
                                ScratchArena& arena, ch04::SubpathStorage& storage, PathContributions& out);
 
@@ -72,7 +72,7 @@ struct Bootstrap {
     double b = 0.0;             // their mean
     double standard_error = 0.0;
 };
-Bootstrap run_bootstrap(const Scene& scene, const ch03::LightSampler& lights, const ch04::BidirectionalSettings& bidirectional,
+Bootstrap run_bootstrap(const Scene& scene, const ch03::FixedLightSampler& lights, const ch04::BidirectionalSettings& bidirectional,
                         const MltSettings& settings, std::uint64_t seed, int threads);  // threads 0: every core
 
 // The generator of bootstrap sample i (and of the chain that starts from it, until it mutates).

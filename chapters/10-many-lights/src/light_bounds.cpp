@@ -1,0 +1,146 @@
+// Bounds of lights and clusters of lights, and their importance for a shading point (book
+// chapter 10; Conty Estevez and Kulla 2018, section 4.1; pbrt-v4, section 12.6.3).
+#include "freezeray/ch10/light_bounds.hpp"
+
+#include "freezeray/ch03/area_light.hpp"
+#include "freezeray/ch03/point_light.hpp"
+#include "freezeray/ch03/spot_light.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace freezeray::ch10 {
+
+namespace {
+
+float safe_sqrt(float x) { return std::sqrt(std::max(x, 0.0f)); }
+float safe_acos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
+
+// Cones are widened by this angle wherever they are computed, so that rounding never leaves a
+// direction out (a light left out would be a light never sampled where it shines: bias).
+constexpr float ConeSlack = 1e-4f;
+
+// cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of a and b in [0, pi].
+float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if (cos_a > cos_b) return 1.0f;  // a < b: the difference is clamped to 0
+    return cos_a * cos_b + sin_a * sin_b;
+}
+float sin_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+    if (cos_a > cos_b) return 0.0f;
+    return sin_a * cos_b - cos_a * sin_b;
+}
+
+// v turned by `angle` about the unit axis k (Rodrigues' formula).
+Vec3 rotate(const Vec3& v, const Vec3& k, float angle) {
+    const float c = std::cos(angle), s = std::sin(angle);
+    return v * c + glm::cross(k, v) * s + k * (glm::dot(k, v) * (1.0f - c));
+}
+
+}  // namespace
+
+DirectionCone cone_union(const DirectionCone& a, const DirectionCone& b) {
+    // Conty Estevez and Kulla 2018, algorithm 1.
+    const float theta_a = safe_acos(a.cos_theta), theta_b = safe_acos(b.cos_theta);
+    const float theta_d = safe_acos(glm::dot(a.w, b.w));
+    if (std::min(theta_d + theta_b, Pi) <= theta_a) return a;  // b lies inside a
+    if (std::min(theta_d + theta_a, Pi) <= theta_b) return b;
+    const float theta_o = (theta_a + theta_d + theta_b) / 2.0f + ConeSlack;
+    if (theta_o >= Pi) return DirectionCone::entire_sphere();
+    // The new axis: a's, turned towards b's so that the cone just reaches both far edges.
+    const Vec3 axis = glm::cross(a.w, b.w);
+    const float axis_length = glm::length(axis);
+    if (!(axis_length > 0.0f)) return DirectionCone::entire_sphere();  // opposite axes
+    const Vec3 w = glm::normalize(rotate(a.w, axis / axis_length, theta_o - ConeSlack - theta_a));
+    return {w, std::cos(theta_o)};
+}
+
+std::optional<LightBounds> bounds_of(const Light& light) {
+    LightBounds b;
+    if (const auto* triangle = dynamic_cast<const ch03::TriangleLight*>(&light)) {
+        // One-sided: it emits around its normal, up to the plane of the triangle.
+        for (const Vec3& p : triangle->vertices()) b.box.expand(p);
+        b.w = triangle->normal();
+        b.phi = luminance(triangle->emission()) * triangle->area();
+        b.cos_theta_o = 1.0f;
+        b.cos_theta_e = std::cos(Pi / 2.0f);
+        return b;
+    }
+    if (const auto* point = dynamic_cast<const ch03::PointLight*>(&light)) {
+        b.box.expand(point->position());
+        b.phi = luminance(point->intensity());
+        b.cos_theta_o = -1.0f;  // every direction
+        b.cos_theta_e = std::cos(Pi / 2.0f);
+        return b;
+    }
+    if (const auto* spot = dynamic_cast<const ch03::SpotLight*>(&light)) {
+        // Full intensity within the falloff start (theta_o), falling off out to the cone's edge
+        // (theta_o + theta_e): pbrt-v4's SpotLight::Bounds.
+        b.box.expand(spot->position());
+        b.w = spot->axis();
+        b.phi = luminance(spot->intensity());
+        const float theta_start = safe_acos(spot->cos_falloff_start()), theta_cone = safe_acos(spot->cos_cone());
+        b.cos_theta_o = std::cos(theta_start);
+        b.cos_theta_e = std::cos(std::max(theta_cone - theta_start, 0.0f));
+        return b;
+    }
+    return std::nullopt;
+}
+
+LightBounds bounds_union(const LightBounds& a, const LightBounds& b) {
+    if (a.phi == 0.0f) return b;
+    if (b.phi == 0.0f) return a;
+    LightBounds u;
+    u.box = a.box;
+    u.box.expand(b.box);
+    const DirectionCone cone = cone_union({a.w, a.cos_theta_o}, {b.w, b.cos_theta_o});
+    u.w = cone.w;
+    u.cos_theta_o = cone.cos_theta;
+    u.cos_theta_e = std::min(a.cos_theta_e, b.cos_theta_e);
+    u.phi = a.phi + b.phi;
+    return u;
+}
+
+// BOOK(light-importance)
+float importance(const LightBounds& bounds, const ShadingPoint& point) {
+    if (bounds.phi <= 0.0f) return 0.0f;
+    const Vec3 centre = (bounds.box.min + bounds.box.max) * 0.5f;
+    const Vec3 to_point = point.position - centre;
+    const float distance_squared = glm::dot(to_point, to_point);
+    const Vec3 half_diagonal = (bounds.box.max - bounds.box.min) * 0.5f;
+    const float radius_squared = glm::dot(half_diagonal, half_diagonal);
+
+    // theta_b: the half-angle of the box's bounding sphere seen from the point (the whole
+    // sphere of directions from inside it).
+    float cos_b = -1.0f, sin_b = 0.0f;
+    if (distance_squared > radius_squared) {
+        const float sin_b_squared = radius_squared / distance_squared;
+        sin_b = std::sqrt(sin_b_squared);
+        cos_b = safe_sqrt(1.0f - sin_b_squared);
+    }
+    const Vec3 wi = distance_squared > 0.0f ? to_point / std::sqrt(distance_squared) : Vec3(0.0f, 0.0f, 1.0f);
+
+    // The smallest angle between an emitter's normal and a direction to the point: theta_w from
+    // the cone's axis, less theta_o (the normals' spread), less theta_b (the cluster's extent).
+    const float cos_w = glm::dot(bounds.w, wi), sin_w = safe_sqrt(1.0f - cos_w * cos_w);
+    const float sin_o = safe_sqrt(1.0f - bounds.cos_theta_o * bounds.cos_theta_o);
+    const float cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
+    const float sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
+    const float cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+    // Outside every emitter's cone by more than rounding: no light of the cluster reaches here.
+    if (cos_p < bounds.cos_theta_e - ConeSlack) return 0.0f;
+
+    float result = bounds.phi * std::max(cos_p, 0.0f) / std::max(distance_squared, radius_squared);
+    if (point.normal != Vec3(0.0f)) {
+        // The largest |cos| at the point's normal over the cluster; never 0, since the sampler
+        // does not know whether the surface lets light through from behind or at grazing angles.
+        const float cos_i = std::abs(glm::dot(wi, point.normal)), sin_i = safe_sqrt(1.0f - cos_i * cos_i);
+        result *= std::max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), ReceiverFloor);
+    }
+    // A cluster's emitter cosine may be 0 at the edge of its cone: keep it samplable there.
+    if (result == 0.0f) result = std::numeric_limits<float>::min();
+    return std::min(result, std::numeric_limits<float>::max());
+}
+// END BOOK
+
+}  // namespace freezeray::ch10

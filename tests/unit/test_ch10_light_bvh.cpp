@@ -1,0 +1,281 @@
+// Chapter 10's light BVH: the probability it reports for a choice is the one probability() gives
+// (bit for bit), the probabilities of all lights sum to one, the choices follow them (chi-square),
+// a light gets probability 0 only where it sends no light at all, and the cone and bounds it
+// builds contain what they bound. Three statistical tests (the chi-square tests over lights, at
+// unit_test_alpha each; tests/STATISTICS.md counts them); the rest is deterministic.
+#include "freezeray/ch03/area_light.hpp"
+#include "freezeray/ch03/directional_light.hpp"
+#include "freezeray/ch03/environment_light.hpp"
+#include "freezeray/ch03/point_light.hpp"
+#include "freezeray/ch03/spot_light.hpp"
+#include "freezeray/ch10/bvh_light_sampler.hpp"
+#include "freezeray/ch10/light_bounds.hpp"
+#include "freezeray/random.hpp"
+
+#include "statistics.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+using namespace freezeray;
+using namespace freezeray::ch10;
+
+namespace {
+
+Vec3 uniform_in_box(PCG32& random, const Vec3& low, const Vec3& high) {
+    return low + (high - low) * Vec3(random.next_float(), random.next_float(), random.next_float());
+}
+
+Vec3 uniform_direction(PCG32& random) {
+    const float z = 1.0f - 2.0f * random.next_float(), phi = 2.0f * Pi * random.next_float();
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    return Vec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
+// A scene's worth of lights: `triangles` small emissive triangles spread over a 20 x 4 x 20 box
+// facing every way, with radiances over three orders of magnitude, point and spot lights, one
+// dark light and, when asked, a directional and a constant environment light.
+struct ManyLights {
+    TriangleMesh mesh;
+    std::vector<std::unique_ptr<Light>> lights;
+
+    ManyLights(int triangles, bool infinite, std::uint64_t seed) {
+        PCG32 random(seed, 7);
+        for (int i = 0; i < triangles; ++i) {
+            const Vec3 c = uniform_in_box(random, Vec3(-10.0f, 0.0f, -10.0f), Vec3(10.0f, 4.0f, 10.0f));
+            const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+            for (int k = 0; k < 3; ++k) mesh.positions.push_back(c + 0.3f * uniform_direction(random));
+            mesh.triangles.push_back({base, base + 1, base + 2});
+        }
+        for (int i = 0; i < triangles; ++i) {
+            const float radiance = std::pow(10.0f, 3.0f * random.next_float());
+            lights.push_back(std::make_unique<ch03::TriangleLight>(mesh, static_cast<std::uint32_t>(i), Spectrum(radiance)));
+        }
+        for (int i = 0; i < 8; ++i)
+            lights.push_back(std::make_unique<ch03::PointLight>(uniform_in_box(random, Vec3(-10.0f), Vec3(10.0f)),
+                                                                Spectrum(1.0f + 50.0f * random.next_float())));
+        for (int i = 0; i < 4; ++i)
+            lights.push_back(std::make_unique<ch03::SpotLight>(uniform_in_box(random, Vec3(-10.0f), Vec3(10.0f)), uniform_direction(random),
+                                                               Spectrum(30.0f), std::cos(0.5f), std::cos(0.3f)));
+        lights.push_back(std::make_unique<ch03::PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // dark
+        if (infinite) {
+            lights.push_back(std::make_unique<ch03::DirectionalLight>(glm::normalize(Vec3(1.0f, -2.0f, 0.5f)), Spectrum(3.0f)));
+            lights.push_back(std::make_unique<ch03::ConstantEnvironmentLight>(Spectrum(0.5f)));
+        }
+        for (std::size_t i = 0; i < lights.size(); ++i) lights[i]->index = static_cast<std::uint32_t>(i);
+    }
+};
+
+ShadingPoint random_point(PCG32& random) {
+    ShadingPoint p;
+    p.position = uniform_in_box(random, Vec3(-14.0f, -4.0f, -14.0f), Vec3(14.0f, 8.0f, 14.0f));
+    if (random.next_float() < 0.8f) p.normal = uniform_direction(random);  // else a point without a surface
+    return p;
+}
+
+}  // namespace
+
+TEST_CASE("the light BVH reports the probability of each choice exactly as probability() gives it", "[unit][ch10]") {
+    for (bool infinite : {false, true}) {
+        const ManyLights scene(150, infinite, 11);
+        const BvhLightSampler sampler(scene.lights);
+        PCG32 random(3, 5);
+        int chosen = 0;
+        for (int k = 0; k < 2000; ++k) {
+            const ShadingPoint point = random_point(random);
+            for (int j = 0; j < 20; ++j) {
+                const float u = random.next_float();
+                const std::optional<LightChoice> choice = sampler.sample(point, u);
+                if (!choice) continue;
+                ++chosen;
+                INFO("point (" << point.position.x << ", " << point.position.y << ", " << point.position.z << "), u " << u);
+                REQUIRE(choice->probability > 0.0f);
+                REQUIRE(choice->probability == sampler.probability(point, *choice->light));  // bit for bit
+            }
+        }
+        CHECK(chosen > 30000);
+    }
+}
+
+TEST_CASE("the light BVH's probabilities of all lights at a point sum to at most one", "[unit][ch10]") {
+    // Less than one where the walk can end at a node whose two children both send nothing to the
+    // point, though their union's looser bounds did not exclude it: sample() then chooses nothing
+    // (the chi-square test below counts how often). Each probability is a product of up to
+    // depth + 1 ratios, each rounded once in float: with a depth of 16 here the relative error of
+    // each is below 40 ulp, 2.4e-6; allowed 1e-5.
+    for (bool infinite : {false, true}) {
+        const ManyLights scene(300, infinite, 12);
+        const BvhLightSampler sampler(scene.lights);
+        PCG32 random(4, 5);
+        double total = 0.0;
+        for (int k = 0; k < 500; ++k) {
+            const ShadingPoint point = random_point(random);
+            double sum = 0.0;
+            for (const auto& light : scene.lights) sum += sampler.probability(point, *light);
+            INFO("point (" << point.position.x << ", " << point.position.y << ", " << point.position.z << ")");
+            CHECK(sum <= 1.0 + 1e-5);
+            total += sum;
+        }
+        // Most walks reach a light: a tree that often chose nothing would waste its samples.
+        INFO("mean sum " << total / 500.0);
+        CHECK(total / 500.0 > 0.8);
+        CHECK(sampler.probability(random_point(random), *scene.lights[300 + 12]) == 0.0f);  // the dark light
+    }
+}
+
+TEST_CASE("the light BVH chooses each light as often as the probability it reports (chi-square over lights)", "[unit][ch10]") {
+    // Three shading points (inside the cloud of lights, below it, beside it with the infinite
+    // lights), 400,000 choices each, one chi-square test each at unit_test_alpha: a cell per
+    // light, and one for the walks that choose nothing (expected N (1 - the probabilities' sum)),
+    // cells expecting fewer than 5 choices pooled.
+    const ManyLights scene(200, true, 13);
+    const BvhLightSampler sampler(scene.lights);
+    const ShadingPoint points[] = {{Vec3(1.0f, 2.0f, -3.0f), glm::normalize(Vec3(0.2f, 1.0f, 0.1f))},
+                                   {Vec3(0.0f, -3.0f, 4.0f), Vec3(0.0f, 1.0f, 0.0f)},
+                                   {Vec3(13.0f, 1.0f, 0.0f), Vec3(0.0f)}};
+    constexpr int choices = 400000;
+    std::uint64_t seed = 1001;
+    for (const ShadingPoint& point : points) {
+        PCG32 random(seed++, 3);
+        const std::size_t none = scene.lights.size();  // the cell of walks that choose nothing
+        std::vector<double> observed(none + 1, 0.0), expected(none + 1, 0.0);
+        for (int k = 0; k < choices; ++k) {
+            const std::optional<LightChoice> choice = sampler.sample(point, random.next_float());
+            observed[choice ? choice->light->index : none] += 1.0;
+        }
+        double sum = 0.0;
+        for (const auto& light : scene.lights) {
+            expected[light->index] = choices * static_cast<double>(sampler.probability(point, *light));
+            sum += sampler.probability(point, *light);
+        }
+        expected[none] = sum < 1.0 ? choices * (1.0 - sum) : 0.0;
+        if (expected[none] < 1e-3 * choices) expected[none] = 0.0, sum = 1.0;  // rounding of a full sum: no cell
+        double statistic = 0.0, pooled_observed = 0.0, pooled_expected = 0.0;
+        int cells = 0;
+        for (std::size_t i = 0; i < observed.size(); ++i) {
+            if (expected[i] == 0.0) {
+                INFO("cell " << i << " (" << (i == none ? "no light" : "a light") << "), sum of probabilities " << sum);
+                REQUIRE(observed[i] == 0.0);  // never chosen where its probability is 0
+            } else if (expected[i] < 5.0) {
+                pooled_observed += observed[i];
+                pooled_expected += expected[i];
+            } else {
+                statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+                ++cells;
+            }
+        }
+        if (pooled_expected > 0.0) {
+            statistic += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
+            ++cells;
+        }
+        REQUIRE(cells > 50);
+        const double p_value = stats::chi_square_survival(statistic, cells - 1);
+        INFO("chi^2 = " << statistic << " over " << cells << " cells, p = " << p_value);
+        CHECK(p_value > stats::unit_test_alpha);
+    }
+}
+
+TEST_CASE("the light BVH gives a light probability 0 only where it sends no light at all", "[unit][ch10]") {
+    // Where a light's probability is 0, it must send nothing: a one-sided triangle has the point
+    // behind its plane (every sample_li fails), a spot light has it outside its cone. Points on
+    // the lights' planes and at grazing angles to the point's surface keep a probability.
+    const ManyLights scene(120, false, 14);
+    const BvhLightSampler sampler(scene.lights);
+    PCG32 random(8, 9);
+    int zero = 0, checked = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const ShadingPoint point = random_point(random);
+        for (const auto& light : scene.lights) {
+            if (sampler.probability(point, *light) > 0.0f) continue;
+            if (light->power() == Spectrum(0.0f)) continue;  // the dark light: nothing to send
+            ++zero;
+            for (int j = 0; j < 16; ++j) {
+                const Vec2 u(random.next_float(), random.next_float());
+                const std::optional<LightSample> s = light->sample_li(point.position, u);
+                INFO("light " << light->index << " at point (" << point.position.x << ", " << point.position.y << ", "
+                              << point.position.z << ")");
+                REQUIRE((!s || is_black(s->radiance)));
+                ++checked;
+            }
+        }
+    }
+    CHECK(zero > 1000);  // the case happens (one-sided triangles seen from behind)
+
+    // A triangle seen exactly edge-on, and a point light exactly in the plane of the point's
+    // surface: both keep a probability.
+    TriangleMesh mesh;
+    mesh.positions = {Vec3(-1.0f, 0.0f, -1.0f), Vec3(1.0f, 0.0f, -1.0f), Vec3(0.0f, 0.0f, 1.0f)};  // faces -y or +y
+    mesh.triangles = {{0u, 1u, 2u}};
+    std::vector<std::unique_ptr<Light>> two;
+    two.push_back(std::make_unique<ch03::TriangleLight>(mesh, 0, Spectrum(1.0f)));
+    two.push_back(std::make_unique<ch03::PointLight>(Vec3(5.0f, 3.0f, 0.0f), Spectrum(1.0f)));
+    for (std::size_t i = 0; i < two.size(); ++i) two[i]->index = static_cast<std::uint32_t>(i);
+    const BvhLightSampler pair(two);
+    const ShadingPoint in_plane{Vec3(5.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)};  // the triangle's plane; the point light above
+    CHECK(pair.probability(in_plane, *two[0]) > 0.0f);
+    const ShadingPoint grazing{Vec3(0.0f, 3.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)};  // the point light in its tangent plane
+    CHECK(pair.probability(grazing, *two[1]) > 0.0f);
+}
+
+TEST_CASE("a cluster's bounds contain its lights' and its cone every direction of theirs", "[unit][ch10]") {
+    PCG32 random(21, 1);
+    for (int k = 0; k < 20000; ++k) {
+        const DirectionCone a{uniform_direction(random), 1.0f - 2.0f * random.next_float() * random.next_float()};
+        const DirectionCone b{uniform_direction(random), 1.0f - 2.0f * random.next_float() * random.next_float()};
+        const DirectionCone u = cone_union(a, b);
+        // Every direction of a and b: their axes, and directions on their rims.
+        for (const DirectionCone& c : {a, b}) {
+            const Frame frame(c.w);
+            const float sin_c = std::sqrt(std::max(0.0f, 1.0f - c.cos_theta * c.cos_theta));
+            for (int j = 0; j < 16; ++j) {
+                const float phi = 2.0f * Pi * static_cast<float>(j) / 16.0f;
+                const Vec3 d = frame.to_world(Vec3(sin_c * std::cos(phi), sin_c * std::sin(phi), c.cos_theta));
+                INFO("cone " << k << ", rim direction " << j);
+                REQUIRE(glm::dot(glm::normalize(d), u.w) >= u.cos_theta - 1e-6f);
+            }
+        }
+    }
+    const ManyLights scene(64, false, 15);
+    const BvhLightSampler sampler(scene.lights);
+    const auto& nodes = sampler.nodes();
+    // Every interior node's box holds its children's, and its power is theirs together.
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        if (nodes[i].is_leaf) continue;
+        for (std::size_t child : {i + 1, static_cast<std::size_t>(nodes[i].second_child_or_light)}) {
+            for (int axis = 0; axis < 3; ++axis) {
+                REQUIRE(nodes[i].bounds.box.min[axis] <= nodes[child].bounds.box.min[axis]);
+                REQUIRE(nodes[i].bounds.box.max[axis] >= nodes[child].bounds.box.max[axis]);
+            }
+        }
+        REQUIRE(nodes[i].bounds.phi ==
+                Approx(nodes[i + 1].bounds.phi + nodes[nodes[i].second_child_or_light].bounds.phi).epsilon(1e-6));
+    }
+    CHECK(nodes.size() == 2 * (64 + 8 + 4) - 1);  // every light but the dark one, in a binary tree
+}
+
+TEST_CASE("the light BVH with no lights, one light, and only infinite lights", "[unit][ch10]") {
+    const std::vector<std::unique_ptr<Light>> none;
+    const BvhLightSampler empty(none);
+    CHECK_FALSE(empty.sample(ShadingPoint{}, 0.5f));
+
+    std::vector<std::unique_ptr<Light>> one;
+    one.push_back(std::make_unique<ch03::PointLight>(Vec3(0.0f, 1.0f, 0.0f), Spectrum(2.0f)));
+    one[0]->index = 0;
+    const BvhLightSampler single(one);
+    const ShadingPoint point{Vec3(0.0f), Vec3(0.0f, 1.0f, 0.0f)};
+    REQUIRE(single.sample(point, 0.7f));
+    CHECK(single.sample(point, 0.7f)->probability == 1.0f);
+    CHECK(single.probability(point, *one[0]) == 1.0f);
+
+    std::vector<std::unique_ptr<Light>> sky;
+    sky.push_back(std::make_unique<ch03::ConstantEnvironmentLight>(Spectrum(1.0f)));
+    sky.push_back(std::make_unique<ch03::DirectionalLight>(Vec3(0.0f, -1.0f, 0.0f), Spectrum(1.0f)));
+    for (std::size_t i = 0; i < sky.size(); ++i) sky[i]->index = static_cast<std::uint32_t>(i);
+    const BvhLightSampler infinite(sky);
+    CHECK(infinite.sample(point, 0.2f)->light == sky[0].get());
+    CHECK(infinite.sample(point, 0.7f)->light == sky[1].get());
+    CHECK(infinite.probability(point, *sky[1]) == 0.5f);
+}
