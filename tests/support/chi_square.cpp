@@ -139,9 +139,12 @@ std::vector<double> integrate_cells(const Domain& domain, const Grid& grid, cons
     return integrals;
 }
 
-// Pearson's statistic with low-count pooling, as in Mitsuba: visit cells by increasing expected
-// count; cells below the minimum go into one pooled cell, and so do the next cells until the pool
-// reaches the minimum. Returns the statistic and the number of cells used.
+std::string count_line(std::uint64_t count, std::uint64_t total, const std::string& what) {
+    return std::to_string(count) + " of " + std::to_string(total) + " samples " + what + "\n";
+}
+
+}  // namespace
+
 std::pair<double, int> pooled_statistic(const std::vector<double>& observed, const std::vector<double>& expected,
                                         double minimum_expected, std::uint64_t& samples_in_empty_cells) {
     std::vector<std::size_t> order(expected.size());
@@ -168,12 +171,6 @@ std::pair<double, int> pooled_statistic(const std::vector<double>& observed, con
     }
     return {statistic, cells};
 }
-
-std::string count_line(std::uint64_t count, std::uint64_t total, const std::string& what) {
-    return std::to_string(count) + " of " + std::to_string(total) + " samples " + what + "\n";
-}
-
-}  // namespace
 
 std::string Domain::name() const {
     switch (kind) {

@@ -14,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace freezeray::stats {
@@ -89,6 +90,14 @@ struct ChiSquareResult {
     // The observed and expected count of every cell, with its parameter ranges: for a failure report.
     std::string table() const;
 };
+
+// Pearson's statistic with low-count pooling, as in Mitsuba: visit cells by increasing expected
+// count; cells below the minimum go into one pooled cell, and so do the next cells until the pool
+// reaches the minimum. Returns the statistic and the number of cells used; samples observed in
+// cells expecting none are added to samples_in_empty_cells. For discrete distributions (which
+// light a sampler chooses) whose cells need no quadrature.
+std::pair<double, int> pooled_statistic(const std::vector<double>& observed, const std::vector<double>& expected,
+                                        double minimum_expected, std::uint64_t& samples_in_empty_cells);
 
 // Runs the chi-square test of `sample` against `pdf` on `domain`. Fails when the p-value is at
 // most options.alpha, when any sample is outside the domain or has zero pdf, or when the pdf's

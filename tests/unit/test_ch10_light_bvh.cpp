@@ -12,10 +12,12 @@
 #include "freezeray/ch10/light_bounds.hpp"
 #include "freezeray/random.hpp"
 
+#include "chi_square.hpp"
 #include "statistics.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -151,26 +153,12 @@ TEST_CASE("the light BVH chooses each light as often as the probability it repor
             expected[light->index] = choices * static_cast<double>(sampler.probability(point, *light));
             sum += sampler.probability(point, *light);
         }
-        expected[none] = sum < 1.0 ? choices * (1.0 - sum) : 0.0;
-        if (expected[none] < 1e-3 * choices) expected[none] = 0.0, sum = 1.0;  // rounding of a full sum: no cell
-        double statistic = 0.0, pooled_observed = 0.0, pooled_expected = 0.0;
-        int cells = 0;
-        for (std::size_t i = 0; i < observed.size(); ++i) {
-            if (expected[i] == 0.0) {
-                INFO("cell " << i << " (" << (i == none ? "no light" : "a light") << "), sum of probabilities " << sum);
-                REQUIRE(observed[i] == 0.0);  // never chosen where its probability is 0
-            } else if (expected[i] < 5.0) {
-                pooled_observed += observed[i];
-                pooled_expected += expected[i];
-            } else {
-                statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-                ++cells;
-            }
-        }
-        if (pooled_expected > 0.0) {
-            statistic += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
-            ++cells;
-        }
+        // A sum that is 1 but for rounding expects well under one walk there: the cell is pooled.
+        expected[none] = choices * std::max(0.0, 1.0 - sum);
+        std::uint64_t in_empty_cells = 0;  // chosen where its probability is 0
+        const auto [statistic, cells] = stats::pooled_statistic(observed, expected, 5.0, in_empty_cells);
+        INFO("sum of probabilities " << sum);
+        REQUIRE(in_empty_cells == 0u);
         REQUIRE(cells > 50);
         const double p_value = stats::chi_square_survival(statistic, cells - 1);
         INFO("chi^2 = " << statistic << " over " << cells << " cells, p = " << p_value);
