@@ -71,6 +71,14 @@ bool AutoIntegrator::samples_lights() const {
     return false;
 }
 
+// The render's light sampler reaches the candidates that choose lights per point (pt-mis); the
+// others ignore it.
+bool AutoIntegrator::chooses_lights_per_point() const {
+    for (const Candidate& c : candidates_)
+        if (c.integrator->chooses_lights_per_point()) return true;
+    return false;
+}
+
 RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };

@@ -86,6 +86,13 @@ echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"textures\": {\"filter\
 expect_failure "unknown texture filter in the scene" "nearest.json: /textures/filter" "bilinear, trilinear" -- render "$work/nearest.json" --out "$work/out.png"
 expect_failure "unknown texture filter on the command line" "--texture-filter" "bilinear, trilinear" -- render "$work/good.json" --texture-filter nearest --out "$work/out.png"
 expect_failure "impossible tile size" "--texture-tile-size" "not 3" -- render "$work/good.json" --texture-tile-size 3 --out "$work/out.png"
+# Light samplers (chapters 03 and 10): an unknown one, and one named for an integrator that does
+# not choose lights at shading points.
+expect_failure "unknown light sampler" "--light-sampler" "did you mean" -- render "$work/good.json" --integrator pt-mis --light-sampler bhv --out "$work/out.png"
+expect_failure "a light sampler for bdpt" "--light-sampler" "bdpt does not choose lights through a light sampler" -- render "$work/good.json" --integrator bdpt --light-sampler bvh --out "$work/out.png"
+echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"render\": {\"light_sampler\": \"tree\"} }" > "$work/light-tree.json"
+expect_failure "unknown light sampler in the scene" "light-tree.json: /render/light_sampler" "tree" -- render "$work/light-tree.json" --out "$work/out.png"
+expect_failure "a compare run naming an unknown sampler" "--integrators" "bvhh" -- compare "$work/good.json" --integrators pt-mis@bvhh --spp 1 --out "$work/report"
 renderer=$chapter01_renderer
 echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"textures\": {\"layout\": \"tiled\"} }" > "$work/tiled.json"
 expect_failure "texture layout of a later chapter" "tiled.json: /textures/layout" "introduced in chapter 08" -- render "$work/tiled.json" --out "$work/out.png"

@@ -103,6 +103,7 @@ LightBounds bounds_union(const LightBounds& a, const LightBounds& b) {
 
 // BOOK(light-importance)
 float importance(const LightBounds& bounds, const ShadingPoint& point) {
+    // EXERCISE(ch10/cluster-importance): the bound of book chapter 10, "The importance of a cluster": phi, times the largest emitter cosine towards the point over the cluster's cone and extent (0 beyond theta_e, with ConeSlack), times the largest |cos| at the point's normal (at least ReceiverFloor), over the squared distance to the box's centre (at least the squared half-diagonal); never 0 where some light may reach the point
     if (bounds.phi <= 0.0f) return 0.0f;
     const Vec3 centre = (bounds.box.min + bounds.box.max) * 0.5f;
     const Vec3 to_point = point.position - centre;
@@ -140,6 +141,7 @@ float importance(const LightBounds& bounds, const ShadingPoint& point) {
     // A cluster's emitter cosine may be 0 at the edge of its cone: keep it samplable there.
     if (result == 0.0f) result = std::numeric_limits<float>::min();
     return std::min(result, std::numeric_limits<float>::max());
+    // END EXERCISE
 }
 // END BOOK
 

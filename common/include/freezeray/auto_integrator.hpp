@@ -46,6 +46,7 @@ public:
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
     bool samples_lights() const override;
+    bool chooses_lights_per_point() const override;
     bool resumable() const override { return false; }  // the choice is part of the render
 
 private:
