@@ -110,24 +110,31 @@ float importance(const LightBounds& bounds, const ShadingPoint& point) {
     const float distance_squared = glm::dot(to_point, to_point);
     const Vec3 half_diagonal = (bounds.box.max - bounds.box.min) * 0.5f;
     const float radius_squared = glm::dot(half_diagonal, half_diagonal);
+    const float inverse_distance = distance_squared > 0.0f ? 1.0f / std::sqrt(distance_squared) : 0.0f;
 
     // theta_b: the half-angle of the box's bounding sphere seen from the point (the whole
-    // sphere of directions from inside it).
+    // sphere of directions from inside it: cos_b = -1).
     float cos_b = -1.0f, sin_b = 0.0f;
     if (distance_squared > radius_squared) {
         const float sin_b_squared = radius_squared / distance_squared;
         sin_b = std::sqrt(sin_b_squared);
         cos_b = safe_sqrt(1.0f - sin_b_squared);
     }
-    const Vec3 wi = distance_squared > 0.0f ? to_point / std::sqrt(distance_squared) : Vec3(0.0f, 0.0f, 1.0f);
 
-    // The smallest angle between an emitter's normal and a direction to the point: theta_w from
-    // the cone's axis, less theta_o (the normals' spread), less theta_b (the cluster's extent).
-    const float cos_w = glm::dot(bounds.w, wi), sin_w = safe_sqrt(1.0f - cos_w * cos_w);
-    const float sin_o = safe_sqrt(1.0f - bounds.cos_theta_o * bounds.cos_theta_o);
-    const float cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
-    const float sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
-    const float cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+    // cos theta': theta' is the smallest angle between an emitter's normal and a direction to the
+    // point: theta_w from the cone's axis, less theta_o (the normals' spread), less theta_b (the
+    // cluster's extent), at least 0. Each step is skipped where it is already 0.
+    float cos_p = 1.0f;
+    if (bounds.cos_theta_o > -1.0f) {
+        const float cos_w = glm::dot(bounds.w, to_point) * inverse_distance;
+        if (cos_w < bounds.cos_theta_o) {  // theta_w > theta_o
+            const float sin_w = safe_sqrt(1.0f - cos_w * cos_w);
+            const float sin_o = safe_sqrt(1.0f - bounds.cos_theta_o * bounds.cos_theta_o);
+            const float cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
+            const float sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
+            cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
+        }
+    }
     // Outside every emitter's cone by more than rounding: no light of the cluster reaches here.
     if (cos_p < bounds.cos_theta_e - ConeSlack) return 0.0f;
 
@@ -135,8 +142,11 @@ float importance(const LightBounds& bounds, const ShadingPoint& point) {
     if (point.normal != Vec3(0.0f)) {
         // The largest |cos| at the point's normal over the cluster; never 0, since the sampler
         // does not know whether the surface lets light through from behind or at grazing angles.
-        const float cos_i = std::abs(glm::dot(wi, point.normal)), sin_i = safe_sqrt(1.0f - cos_i * cos_i);
-        result *= std::max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), ReceiverFloor);
+        const float cos_i = std::abs(glm::dot(to_point, point.normal)) * inverse_distance;
+        if (cos_i < cos_b) {  // theta_i > theta_b
+            const float sin_i = safe_sqrt(1.0f - cos_i * cos_i);
+            result *= std::max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), ReceiverFloor);
+        }
     }
     // A cluster's emitter cosine may be 0 at the edge of its cone: keep it samplable there.
     if (result == 0.0f) result = std::numeric_limits<float>::min();
