@@ -174,8 +174,12 @@ TEST_CASE("a nested uniform scramble flips each bit by a function of the bits ab
     CHECK(nested_uniform_scramble(0x40000000u, 1) != nested_uniform_scramble(0x40000000u, 2));
 }
 
-TEST_CASE("the sobol sampler's draws over any 2^m samples of a pixel from a multiple of 2^m are nets", "[unit][ch09]") {
-    SobolSampler sampler;
+namespace {
+
+// REQUIREs that for seeds 0 and 77 and three pixels, the sampler's draws over samples
+// [a 2^m, (a + 1) 2^m) are (0, m, 2)-nets in four 2D draws and (0, m, 1)-nets in three 1D draws,
+// for m <= 10 and blocks a = 0, 1 and 6. `what` names the sampler in a failure.
+void require_pixel_draws_are_nets(Sampler& sampler, const std::string& what) {
     for (std::uint64_t seed : {0ull, 77ull}) {
         sampler.set_seed(seed);
         for (std::uint32_t pixel : {0u, 1u, 4097u})
@@ -183,18 +187,26 @@ TEST_CASE("the sobol sampler's draws over any 2^m samples of a pixel from a mult
                 for (std::uint64_t block : {0ull, 1ull, 6ull}) {
                     const std::uint64_t first = block << m, count = std::uint64_t{1} << m;
                     for (Draw d : {Draw::Pixel, Draw::LightPosition1, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
-                        std::string what;
-                        const bool net = is_02_net(pixel_points(sampler, pixel, first, count, d), m, what);
-                        INFO("seed " << seed << ", pixel " << pixel << ", m = " << m << ", block " << block << ", draw "
-                                     << static_cast<int>(d) << ": " << what);
+                        std::string why;
+                        const bool net = is_02_net(pixel_points(sampler, pixel, first, count, d), m, why);
+                        INFO(what << ", seed " << seed << ", pixel " << pixel << ", m = " << m << ", block " << block
+                                  << ", draw " << static_cast<int>(d) << ": " << why);
                         REQUIRE(net);
                     }
                     for (Draw d : {Draw::LightChoice1, Draw::Roulette3, Draw::BsdfLobe16}) {
-                        INFO("seed " << seed << ", pixel " << pixel << ", m = " << m << ", 1D draw " << static_cast<int>(d));
+                        INFO(what << ", seed " << seed << ", pixel " << pixel << ", m = " << m << ", block " << block
+                                  << ", 1D draw " << static_cast<int>(d));
                         REQUIRE(is_01_net(pixel_values(sampler, pixel, first, count, d), m));
                     }
                 }
     }
+}
+
+}  // namespace
+
+TEST_CASE("the sobol sampler's draws over any 2^m samples of a pixel from a multiple of 2^m are nets", "[unit][ch09]") {
+    SobolSampler sampler;
+    require_pixel_draws_are_nets(sampler, "sobol");
 }
 
 TEST_CASE("the sobol sampler's scrambles make each point uniform and the pairs independent", "[unit][ch09]") {
@@ -362,26 +374,7 @@ TEST_CASE("the zsobol sampler's draws over any 2^m samples of a pixel from a mul
     for (std::uint64_t planned : {std::uint64_t{1024}, std::uint64_t{0}}) {
         ZSobolSampler sampler;
         sampler.plan_render(64, 64, planned);
-        for (std::uint64_t seed : {0ull, 77ull}) {
-            sampler.set_seed(seed);
-            for (std::uint32_t pixel : {0u, 1u, 4097u})
-                for (int m = 0; m <= 10; ++m)
-                    for (std::uint64_t block : {0ull, 1ull, 6ull}) {
-                        const std::uint64_t first = block << m, count = std::uint64_t{1} << m;
-                        for (Draw d : {Draw::Pixel, Draw::LightPosition1, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
-                            std::string what;
-                            const bool net = is_02_net(pixel_points(sampler, pixel, first, count, d), m, what);
-                            INFO("planned " << planned << ", seed " << seed << ", pixel " << pixel << ", m = " << m
-                                            << ", block " << block << ", draw " << static_cast<int>(d) << ": " << what);
-                            REQUIRE(net);
-                        }
-                        for (Draw d : {Draw::LightChoice1, Draw::Roulette3, Draw::BsdfLobe16}) {
-                            INFO("planned " << planned << ", seed " << seed << ", pixel " << pixel << ", m = " << m
-                                            << ", block " << block << ", 1D draw " << static_cast<int>(d));
-                            REQUIRE(is_01_net(pixel_values(sampler, pixel, first, count, d), m));
-                        }
-                    }
-        }
+        require_pixel_draws_are_nets(sampler, "zsobol planned for " + std::to_string(planned) + " spp");
     }
 }
 
