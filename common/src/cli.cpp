@@ -61,8 +61,7 @@ int run_info(const std::string& scene_path, const Registry& registry) {
                   << " emissive triangles become area lights from chapter 03 on, which samples them";
     std::cout << "\n";
     // How pt-nee and pt-mis choose lights here (chapters 03 and 10), built as a render builds it.
-    const std::string light_sampler =
-        !scene.defaults.light_sampler.empty() ? scene.defaults.light_sampler : registry.default_light_sampler();
+    const std::string light_sampler = light_sampler_name("", scene, registry);
     if (!light_sampler.empty() && !scene.lights.empty()) {
         const auto sampler = registry.make_light_sampler(light_sampler, scene.lights, scene.file + ": /render/light_sampler");
         std::cout << "light sampler: " << light_sampler << "\n";

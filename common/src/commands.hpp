@@ -62,20 +62,15 @@ struct SamplerChoice {
     std::string name;
     std::shared_ptr<const Sampler> sampler;
 };
-// A comparison's run, "pt-mis", "pt-mis@sobol", "pt-mis@bvh" or "pt-mis@sobol@bvh": the
-// integrator, and the sampler and light sampler it names (each empty when the run names none).
-// Each name after an @ must be a registered sampler or light sampler (InputError otherwise).
-struct RunName {
-    std::string integrator, sampler, light_sampler;
-};
-RunName parse_run_name(const std::string& run, const Registry& registry);
-
 SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
                              const Integrator& integrator, const std::string& integrator_name, const Registry& registry);
 
 // The light sampler of a render, chosen as the sampler is and built over the scene's lights: a
 // named one is refused (InputError at `where`) for an integrator that does not choose lights at
 // shading points; for such an integrator, without a name, none (empty name, null sampler).
+// The light sampler a render names: the command line's (`requested`), else the scene's, else the
+// renderer's default (empty before chapter 03).
+std::string light_sampler_name(const std::string& requested, const Scene& scene, const Registry& registry);
 struct LightSamplerChoice {
     std::string name;
     std::shared_ptr<const LightSampler> sampler;

@@ -2,6 +2,7 @@
 // writes what was done, checkpoints are atomic, and a resumed render equals the uninterrupted one.
 #include "commands.hpp"
 
+#include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/progress.hpp"
@@ -64,10 +65,14 @@ SamplerChoice choose_sampler(const std::string& requested, const std::string& wh
     return {name, registry.make_sampler(name, at)};
 }
 
+std::string light_sampler_name(const std::string& requested, const Scene& scene, const Registry& registry) {
+    return !requested.empty() ? requested : !scene.defaults.light_sampler.empty() ? scene.defaults.light_sampler
+                                                                                  : registry.default_light_sampler();
+}
+
 LightSamplerChoice choose_light_sampler(const std::string& requested, const std::string& where, const Scene& scene,
                                         const Integrator& integrator, const std::string& integrator_name,
                                         const Registry& registry) {
-    const bool named = !requested.empty() || !scene.defaults.light_sampler.empty();
     const std::string at = !requested.empty() ? where : scene.file + ": /render/light_sampler";
     if (!integrator.chooses_lights_per_point()) {
         if (!requested.empty())
@@ -75,7 +80,7 @@ LightSamplerChoice choose_light_sampler(const std::string& requested, const std:
                                  "light paths and bidirectional strategies choose by power everywhere)");
         return {};  // a scene's default applies to the integrators that read it
     }
-    const std::string name = named ? (!requested.empty() ? requested : scene.defaults.light_sampler) : registry.default_light_sampler();
+    const std::string name = light_sampler_name(requested, scene, registry);
     if (name.empty()) return {};
     return {name, registry.make_light_sampler(name, scene.lights, at)};
 }

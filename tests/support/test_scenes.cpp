@@ -1,6 +1,7 @@
 // Helpers for tests that render.
 #include "test_scenes.hpp"
 
+#include "freezeray/comparison.hpp"
 #include "freezeray/complete_renderer.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/parameters.hpp"
@@ -65,17 +66,11 @@ RenderResult render(const TestRender& request) {
     if (request.mlt_chains > 0) given.values["mlt_chains"] = request.mlt_chains;
     const auto chapter_options = integrator_options(scene, given, full_registry());
     // "integrator@sampler", "integrator@light_sampler", or both, as compare's runs name them.
-    std::size_t at = request.integrator.find('@');
-    const std::string integrator_name = request.integrator.substr(0, at);
-    while (at != std::string::npos) {
-        const std::size_t next = request.integrator.find('@', at + 1);
-        const std::string part = request.integrator.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1);
-        if (full_registry().has(CapabilityKind::LightSampler, part))
-            settings.light_sampler = full_registry().make_light_sampler(part, scene.lights, "test");
-        else
-            settings.sampler = full_registry().make_sampler(part, "test");
-        at = next;
-    }
+    const RunName run = parse_run_name(request.integrator, full_registry());
+    const std::string& integrator_name = run.integrator;
+    if (!run.sampler.empty()) settings.sampler = full_registry().make_sampler(run.sampler, "test");
+    if (!run.light_sampler.empty())
+        settings.light_sampler = full_registry().make_light_sampler(run.light_sampler, scene.lights, "test");
     const auto integrator = full_registry().make_integrator(integrator_name, settings, "test", &chapter_options->parameters());
     Progress quiet(true);
     return integrator->render(scene, settings, quiet);

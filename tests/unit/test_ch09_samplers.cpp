@@ -202,6 +202,20 @@ void require_pixel_draws_are_nets(Sampler& sampler, const std::string& what) {
     }
 }
 
+// Samples 0 .. 4095 of pixel (7, 3) (index 199): each one's pixel x against vertex 1's light
+// choice. Different dimensions must take the pixel's points in different orders (one shuffle for
+// both would put every pair on the diagonal).
+std::vector<Vec2> within_pixel_pairs(Sampler& sampler) {
+    std::vector<Vec2> pairs;
+    for (std::uint64_t i = 0; i < 4096; ++i) {
+        sampler.start_pixel_sample(7, 3, 199, i);
+        const float x = sampler.pixel_2d().x;
+        sampler.start_vertex(1);
+        pairs.emplace_back(x, sampler.get_1d(VertexDimension::LightChoice));
+    }
+    return pairs;
+}
+
 }  // namespace
 
 TEST_CASE("the sobol sampler's draws over any 2^m samples of a pixel from a multiple of 2^m are nets", "[unit][ch09]") {
@@ -218,7 +232,7 @@ TEST_CASE("the sobol sampler's scrambles make each point uniform and the pairs i
     // independently (the same shuffle would put every point on the diagonal).
     SobolSampler sampler;
     sampler.set_seed(3);
-    std::vector<Vec2> across_pixels, two_dimensions, within_pixel;
+    std::vector<Vec2> across_pixels, two_dimensions;
     for (std::uint32_t pixel = 0; pixel < 4096; ++pixel) {
         sampler.start_pixel_sample(static_cast<int>(pixel % 64), static_cast<int>(pixel / 64), pixel, 3);
         across_pixels.push_back(sampler.pixel_2d());
@@ -227,15 +241,9 @@ TEST_CASE("the sobol sampler's scrambles make each point uniform and the pairs i
         sampler.start_vertex(5);
         two_dimensions.emplace_back(choice, sampler.get_1d(VertexDimension::Roulette));
     }
-    for (std::uint64_t i = 0; i < 4096; ++i) {
-        sampler.start_pixel_sample(7, 3, 199, i);
-        const float x = sampler.pixel_2d().x;
-        sampler.start_vertex(1);
-        within_pixel.emplace_back(x, sampler.get_1d(VertexDimension::LightChoice));
-    }
     CHECK(uniform_grid_p_value(across_pixels, 16) > stats::unit_test_alpha);
     CHECK(uniform_grid_p_value(two_dimensions, 16) > stats::unit_test_alpha);
-    CHECK(uniform_grid_p_value(within_pixel, 16) > stats::unit_test_alpha);
+    CHECK(uniform_grid_p_value(within_pixel_pairs(sampler), 16) > stats::unit_test_alpha);
 }
 
 TEST_CASE("permutation_element is a permutation of 0 .. n - 1 for every n and seed", "[unit][ch09]") {
@@ -414,7 +422,7 @@ TEST_CASE("the zsobol sampler's scrambles make each point uniform and the dimens
     // light choice: the dimensions take the pixel's points in different orders.
     ZSobolSampler sampler;
     sampler.plan_render(64, 64, 4096);
-    std::vector<Vec2> over_seeds, two_dimensions, within_pixel;
+    std::vector<Vec2> over_seeds, two_dimensions;
     for (std::uint64_t seed = 0; seed < 4096; ++seed) {
         sampler.set_seed(seed);
         sampler.start_pixel_sample(21, 9, 9 * 64 + 21, 3);
@@ -425,13 +433,7 @@ TEST_CASE("the zsobol sampler's scrambles make each point uniform and the dimens
         two_dimensions.emplace_back(choice, sampler.get_1d(VertexDimension::Roulette));
     }
     sampler.set_seed(3);
-    for (std::uint64_t i = 0; i < 4096; ++i) {
-        sampler.start_pixel_sample(7, 3, 199, i);
-        const float x = sampler.pixel_2d().x;
-        sampler.start_vertex(1);
-        within_pixel.emplace_back(x, sampler.get_1d(VertexDimension::LightChoice));
-    }
     CHECK(uniform_grid_p_value(over_seeds, 16) > stats::unit_test_alpha);
     CHECK(uniform_grid_p_value(two_dimensions, 16) > stats::unit_test_alpha);
-    CHECK(uniform_grid_p_value(within_pixel, 16) > stats::unit_test_alpha);
+    CHECK(uniform_grid_p_value(within_pixel_pairs(sampler), 16) > stats::unit_test_alpha);
 }

@@ -3,6 +3,8 @@
 // 2018, sections 4.2-4.4; pbrt-v4, section 12.6.3).
 #include "freezeray/ch10/bvh_light_sampler.hpp"
 
+#include "freezeray/ch06/surface_area_heuristic.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,11 +23,6 @@ Vec3 centre(const Bounds3& b) { return (b.min + b.max) * 0.5f; }
 
 int widest_axis(const Vec3& extent) { return extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2; }
 
-double surface_area(const Bounds3& b) {
-    const Vec3 d = b.max - b.min;
-    return 2.0 * (static_cast<double>(d.x) * d.y + static_cast<double>(d.y) * d.z + static_cast<double>(d.z) * d.x);
-}
-
 // BOOK(light-split-cost)
 // The cost of a cluster in a split along `axis` of a node whose box is `node_box`: its power,
 // times the solid angle its emission cone spans (M_Omega), times its surface area, times a factor
@@ -37,9 +34,9 @@ double cluster_cost(const LightBounds& b, const Bounds3& node_box, int axis) {
     const double sin_o = std::sin(theta_o), cos_o = std::cos(theta_o);
     const double m_omega = 2.0 * Pi * (1.0 - cos_o) +
                            Pi / 2.0 * (2.0 * theta_w * sin_o - std::cos(theta_o - 2.0 * theta_w) - 2.0 * theta_o * sin_o + cos_o);
-    const Vec3 diagonal = node_box.max - node_box.min;
+    const Vec3 diagonal = node_box.diagonal();
     const double regularity = static_cast<double>(max_component(diagonal)) / static_cast<double>(diagonal[axis]);
-    return static_cast<double>(b.phi) * m_omega * regularity * surface_area(b.box);
+    return static_cast<double>(b.phi) * m_omega * regularity * ch06::surface_area(b.box);
 }
 // END BOOK
 
@@ -130,7 +127,7 @@ void BvhLightSampler::build(std::vector<Entry>& entries, std::size_t begin, std:
             entries.begin());
     } else {
         // Every centre in one place (or too deep): halve by count along the widest axis.
-        const int axis = widest_axis(centres.max - centres.min);
+        const int axis = widest_axis(centres.diagonal());
         middle = begin + (end - begin) / 2;
         std::nth_element(entries.begin() + static_cast<std::ptrdiff_t>(begin), entries.begin() + static_cast<std::ptrdiff_t>(middle),
                          entries.begin() + static_cast<std::ptrdiff_t>(end), [axis](const Entry& a, const Entry& b) {

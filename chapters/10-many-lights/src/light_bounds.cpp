@@ -108,7 +108,7 @@ float importance(const LightBounds& bounds, const ShadingPoint& point) {
     const Vec3 centre = (bounds.box.min + bounds.box.max) * 0.5f;
     const Vec3 to_point = point.position - centre;
     const float distance_squared = glm::dot(to_point, to_point);
-    const Vec3 half_diagonal = (bounds.box.max - bounds.box.min) * 0.5f;
+    const Vec3 half_diagonal = bounds.box.diagonal() * 0.5f;
     const float radius_squared = glm::dot(half_diagonal, half_diagonal);
     const float inverse_distance = distance_squared > 0.0f ? 1.0f / std::sqrt(distance_squared) : 0.0f;
 

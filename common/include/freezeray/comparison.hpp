@@ -150,6 +150,14 @@ struct Comparison {
 
 class Registry;
 
+// A comparison's run, "pt-mis", "pt-mis@sobol", "pt-mis@bvh" or "pt-mis@sobol@bvh": the
+// integrator, and the sampler and light sampler it names (each empty when the run names none).
+// Each name after an @ must be a registered sampler or light sampler (InputError otherwise).
+struct RunName {
+    std::string integrator, sampler, light_sampler;
+};
+RunName parse_run_name(const std::string& run, const Registry& registry);
+
 // What `compare` is asked to do (plain data, parsed in cli.cpp).
 struct CompareRequest {
     std::string scene;
