@@ -2,13 +2,15 @@
 # FreezeRay's quick start (README.md):
 #   ./run.sh render   install what is missing, build, render the Cornell box; prints the image path
 #   ./run.sh test     install what is missing, build, run the whole test suite through ctest
+#   ./run.sh compare  (optional) install, build, compare three integrators on the Cornell box at
+#                     equal time; prints the report's path and opens it when a desktop is there
 # Run as root, or as a user who may use sudo (apt-get is called through sudo when not root).
 set -euo pipefail
 cd "$(dirname "$0")"
 
 command=${1:-}
-if [ "$command" != render ] && [ "$command" != test ]; then
-    echo "usage: ./run.sh render | ./run.sh test" >&2
+if [ "$command" != render ] && [ "$command" != test ] && [ "$command" != compare ]; then
+    echo "usage: ./run.sh render | ./run.sh test | ./run.sh compare" >&2
     exit 2
 fi
 
@@ -33,11 +35,26 @@ jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >&2
 
 if [ "$command" = render ]; then
-    # Only what the render needs: the common library and chapter 01's renderer.
-    cmake --build build --parallel "$jobs" --target ch01 >&2
+    # Only what the render needs: the complete renderer, not the tests.
+    cmake --build build --parallel "$jobs" --target freezeray >&2
     mkdir -p out
-    # Prints the path of the image it wrote.
-    build/chapters/ch01 render scenes/cornell-box/scene.json --out out/cornell-box.png
+    # auto renders short pilots with the integrators the scene allows and finishes with the most
+    # efficient (it says which on stderr); prints the path of the image it wrote.
+    build/chapters/freezeray render scenes/cornell-box/scene.json --integrator auto --spp 256 \
+        --out out/cornell-box.png
+elif [ "$command" = compare ]; then
+    cmake --build build --parallel "$jobs" --target freezeray >&2
+    mkdir -p out
+    # 10 s each. Without a reference the report estimates each image's error from its own
+    # per-pixel variance, which is honest only for independent samples: hence that sampler here
+    # (book/00-measuring.md, book/09-quasi-monte-carlo.md).
+    build/chapters/freezeray compare scenes/cornell-box/scene.json --integrators pt-naive,pt-mis,bdpt \
+        --sampler independent --time 10 --out out/compare-cornell-box --quiet >&2
+    report=out/compare-cornell-box/report.html
+    echo "$report"
+    if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && command -v xdg-open > /dev/null; then
+        xdg-open "$report" > /dev/null 2>&1 || true
+    fi
 else
     cmake --build build --parallel "$jobs" >&2
     # Everything but the benchmarks (label `bench`).

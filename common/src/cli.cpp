@@ -70,6 +70,7 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     std::cout << "accelerator: " << scene.accelerator_name << "\n";
     for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
     std::cout << "effects:\n" << scene.effects.describe();
+    std::cout << "work per ray ([ ] left out: the scene does not call for it):\n" << describe_work_per_ray(scene);
     // The best suited integrator this renderer has.
     const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry);
     std::cout << "suggested:  " << (suggestion.name.empty() ? "none: " + suggestion.reason

@@ -45,6 +45,25 @@ std::string SceneEffects::describe() const {
     return text;
 }
 
+std::string describe_work_per_ray(const Scene& scene) {
+    std::string text;
+    auto line = [&](bool done, const std::string& work, const std::string& why) {
+        text += std::string("  ") + (done ? "[x] " : "[ ] ") + work + " (" + why + ")\n";
+    };
+    line(scene.environment != nullptr, "environment lookup when a ray leaves the scene",
+         scene.environment != nullptr ? "the scene has an environment light" : "no environment light: such a ray adds nothing");
+    line(scene.has_alpha_masks, "alpha-mask test at hits and along shadow rays",
+         scene.has_alpha_masks ? "some material has an alpha mask with holes"
+                               : "no alpha mask: queries go straight to the accelerator");
+    line(scene.effects.textures, "texel reads for material parameters",
+         scene.effects.textures ? "some parameter is textured" : "every parameter is a constant");
+    line(scene.texture_footprints, "the pixel's footprint in texture space at textured hits",
+         scene.texture_footprints ? "the texture layout filters over it"
+         : scene.effects.textures ? "the texture layout reads at the point"
+                                  : "nothing is textured");
+    return text;
+}
+
 IntegratorSuggestion SceneEffects::suggest_integrator(const Registry& registry) const {
     if (!area_emitters && !environment && !delta_lights) return {"", "the scene has no light and renders black"};
     // The candidates, best first; the first one the renderer has is the suggestion.

@@ -37,11 +37,12 @@ bool same_images(const Image& a, const Image& b) {
 TEST_CASE("a render state round-trips exactly and refuses foreign or truncated files", "[unit][state]") {
     TemporaryFolder folder;
     const Film film = random_film(5, 3, 7, 1);
-    const RenderStateInfo info{"scene.json", "pt-naive", "independent", 42, 16, 10, 5, 3};
+    const RenderStateInfo info{"scene.json", "pt-mis", "independent", 42, 16, 10, 5, 3, "bvh"};
     write_render_state(folder.file("a.state"), info, film);
     const RenderState read = read_render_state(folder.file("a.state"));
     CHECK(read.info.seed == 42u);
     CHECK(read.info.first_sample == 16u);
+    CHECK(read.info.light_sampler == "bvh");
     CHECK(same_images(read.film->mean(), film.mean()));
     CHECK(same_images(read.film->variance_of_mean(), film.variance_of_mean()));
     CHECK(read.film->minimum_sample_count() == 7u);

@@ -202,8 +202,29 @@ TEST_CASE("unknown keys of the camera and of a transform give warnings with the 
                                       Catch::Contains("did you mean 'translate'"));
 }
 
+// What `info` lists as the render's work per ray follows the scene: the Cornell box calls for
+// none of it, the environment-lit spheres (a sky, a checkered floor) for the environment and the
+// texels; the flags it reads are the ones Scene::intersect, occluded and environment_radiance test.
+TEST_CASE("the work per ray that info lists is what the scene calls for", "[unit][scene]") {
+    const Scene cornell = load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry());
+    CHECK(cornell.environment == nullptr);
+    CHECK_FALSE(cornell.has_alpha_masks);
+    CHECK_FALSE(cornell.texture_footprints);
+    const std::string cornell_work = describe_work_per_ray(cornell);
+    CHECK(cornell_work.find("[x]") == std::string::npos);
+    CHECK_THAT(cornell_work, Catch::Contains("[ ] environment lookup") && Catch::Contains("[ ] alpha-mask test") &&
+                                 Catch::Contains("[ ] texel reads") && Catch::Contains("nothing is textured"));
+
+    const Scene spheres = load_scene(testing::scene_path("material-spheres/scene-environment.json"), testing::full_registry());
+    REQUIRE(spheres.environment != nullptr);
+    REQUIRE(spheres.effects.textures);
+    const std::string spheres_work = describe_work_per_ray(spheres);
+    CHECK_THAT(spheres_work, Catch::Contains("[x] environment lookup") && Catch::Contains("[x] texel reads") &&
+                                 Catch::Contains("[ ] alpha-mask test"));
+}
+
 // The scenes that read the shared large scenes (scenes/sponza): what their files promise.
-TEST_CASE("Sponza loads under its white sky and at night with its lanterns and night sky", "[unit][scene]") {
+TEST_CASE("Sponza loads under its white sky, at night with its lanterns and night sky, and by day", "[unit][scene]") {
     const std::optional<std::string> shared = testing::shared_scenes_folder();
     if (!shared || !std::filesystem::exists(*shared + "/crytek-sponza/sponza.obj") ||
         !std::filesystem::exists(*shared + "/envmaps/dikhololo_night_1k.hdr")) {
@@ -235,6 +256,19 @@ TEST_CASE("Sponza loads under its white sky and at night with its lanterns and n
             const Vec3 p = mesh.positions[mesh.triangles[emitter.triangle][0]];
             CHECK((p.y > 200.0f && p.y < 400.0f));
         }
+    }
+    SECTION("by day: the daylight map alone, nothing that emits") {
+        if (!std::filesystem::exists(*shared + "/envmaps/rooitou_park_1k.hdr")) {
+            WARN("skipped: the shared daylight map is not there");
+            return;
+        }
+        const Scene scene = load_scene(testing::scene_path("sponza/day.json"), testing::full_registry(), options);
+        CHECK(scene.triangle_count() == SponzaTriangles);
+        CHECK(scene.emissive_triangles.empty());
+        REQUIRE(scene.lights.size() == 1u);
+        CHECK(scene.environment == scene.lights[0].get());
+        CHECK(scene.effects.environment);
+        CHECK_FALSE(scene.effects.area_emitters);
     }
 }
 

@@ -7,6 +7,7 @@
 namespace freezeray {
 
 class Registry;
+class Scene;
 
 // An integrator suited to a scene: its registered name (empty when none fits) and why.
 struct IntegratorSuggestion {
@@ -30,5 +31,11 @@ struct SceneEffects {
     // The best-suited integrator among those `registry` has.
     IntegratorSuggestion suggest_integrator(const Registry& registry) const;
 };
+
+// The work a render does per ray that depends on what the scene contains, one line each, for
+// `info`: "[x]" done, "[ ]" skipped, with the reason. Each line names a test the code makes
+// (Scene::intersect, Scene::occluded, Scene::environment_radiance, the textures), so that a scene
+// without an effect pays nothing for it.
+std::string describe_work_per_ray(const Scene& scene);
 
 }  // namespace freezeray
