@@ -11,7 +11,7 @@ over the chapter's. The images must be identical, pixel for pixel: the same work
 anything freezeray did beyond it would show in the time. The table gives the median ratio over
 the pairs and its spread (lowest and highest).
 
-    tools/effect_cost_benchmark.py --build-dir build [--pairs 7] [--scale 1] [--json]
+    tools/effect_cost_benchmark.py --build-dir build [--pairs 7] [--scale 1] [--only TEXT] [--json]
 
 Exit status 1 when a pair of images differs, 2 on bad input.
 """
@@ -79,14 +79,19 @@ def main(argv=None) -> int:
     parser.add_argument("--pairs", type=int, default=7, help="alternating pairs per case (default 7)")
     parser.add_argument("--scale", type=float, default=1.0,
                         help="multiplies every case's samples per pixel (default 1: about 2 s a render)")
+    parser.add_argument("--only", metavar="TEXT", help="only the cases whose name contains TEXT")
     parser.add_argument("--json", action="store_true", help="one JSON object per line and case")
     args = parser.parse_args(argv)
     if args.pairs < 1 or args.scale <= 0:
         print("effect_cost_benchmark: --pairs must be at least 1 and --scale positive", file=sys.stderr)
         return 2
+    cases = [c for c in CASES if args.only is None or args.only in c["name"]]
+    if not cases:
+        print(f"effect_cost_benchmark: no case's name contains '{args.only}'", file=sys.stderr)
+        return 2
     chapters = args.build_dir / "chapters"
     complete = chapters / "freezeray"
-    missing = [p for p in [complete] + [chapters / c["chapter"] for c in CASES] if not p.is_file()]
+    missing = [p for p in [complete] + [chapters / c["chapter"] for c in cases] if not p.is_file()]
     if missing:
         print(f"effect_cost_benchmark: not built: {', '.join(map(str, missing))}", file=sys.stderr)
         return 2
@@ -96,7 +101,7 @@ def main(argv=None) -> int:
         print(f"{'case':<28} {'earliest':>8} {'pairs':>5} {'earliest s':>10} {'freezeray s':>11} "
               f"{'ratio':>6} {'lowest':>6} {'highest':>7}  images")
     with tempfile.TemporaryDirectory() as folder:
-        for case in CASES:
+        for case in cases:
             earliest = chapters / case["chapter"]
             a_image, b_image = Path(folder) / "a.pfm", Path(folder) / "b.pfm"
             a_times, b_times, identical = [], [], True
