@@ -79,6 +79,12 @@ bool AutoIntegrator::chooses_lights_per_point() const {
     return false;
 }
 
+bool AutoIntegrator::draws_from_sampler() const {
+    for (const Candidate& c : candidates_)
+        if (c.integrator->draws_from_sampler()) return true;
+    return false;
+}
+
 RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -101,6 +107,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
         pilot_settings.time_seconds = 0.0;
         pilot_settings.target_error = 0.0;
         pilot_settings.max_pass_seconds = 0.0;
+        pilot_settings.sampler = nullptr;  // independent: the variance estimates must be honest
         std::vector<std::pair<std::uint64_t, double>> estimates;
         pilot_settings.on_pass = [&](const Film& film, std::uint64_t spp, double) {
             estimates.emplace_back(spp, film.estimated_relative_mse());
@@ -161,7 +168,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
     RenderResult result;
     if (done) {
         result = std::move(pilot);
-    } else if (chosen.integrator->resumable()) {
+    } else if (chosen.integrator->resumable() && !(settings.sampler && chosen.integrator->draws_from_sampler())) {
         // Every pixel goes on from the pilot's samples: the same image as a render of the whole
         // budget with the chosen integrator from the start.
         rest.resume = pilot.film;
@@ -169,8 +176,10 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
             rest.on_pass = [&](const Film& film, std::uint64_t spp, double seconds) { settings.on_pass(film, spp, seconds + spent); };
         result = chosen.integrator->render(scene, rest, progress);
     } else {
-        // A film that cannot be continued: the rest renders the next sample indices of the same
-        // seed, and the two are merged, as `merge` does.
+        // A film that cannot be continued, or a pilot drawn from another sampler than the rest's
+        // (independent, then Sobol): the rest renders the next sample indices of the same seed
+        // with the render's sampler, and the two are merged, as `merge` does.
+        if (!chosen.integrator->draws_from_sampler()) rest.sampler = nullptr;
         rest.first_sample = settings.first_sample + pilot.samples_per_pixel;
         if (settings.time_seconds <= 0.0 && settings.target_error <= 0.0)
             rest.samples_per_pixel = settings.samples_per_pixel - pilot.samples_per_pixel;

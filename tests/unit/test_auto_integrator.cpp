@@ -34,12 +34,15 @@ PilotMeasurement pilot(const std::string& name, double efficiency, const std::st
     return m;
 }
 
-RenderResult render_with(const std::string& integrator, const std::string& scene_file, std::uint64_t spp) {
+RenderResult render_with(const std::string& integrator, const std::string& scene_file, std::uint64_t spp,
+                         const std::string& sampler = "", std::uint64_t first_sample = 0) {
     const Registry& registry = testing::full_registry();
     const Scene scene = load_scene(testing::scene_path(scene_file), registry);
     RenderSettings settings;
     settings.samples_per_pixel = spp;
     settings.seed = 5;
+    settings.first_sample = first_sample;
+    if (!sampler.empty()) settings.sampler = registry.make_sampler(sampler, "test");
     Progress quiet(true);
     return registry.make_integrator(integrator, settings, "test")->render(scene, settings, quiet);
 }
@@ -113,4 +116,28 @@ TEST_CASE("auto keeps the chosen pilot's samples: the image is the chosen integr
             largest = std::max(largest, std::abs(double(merged.image[i][c]) - double(bdpt.image[i][c])) /
                                             (std::abs(double(bdpt.image[i][c])) + 1e-3));
     CHECK(largest < 1e-4);
+}
+
+// Largest difference of two images relative to the second's values (+ 1e-3).
+static double largest_relative_difference(const Image& a, const Image& b) {
+    double largest = 0.0;
+    for (std::size_t i = 0; i < b.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c)
+            largest = std::max(largest, std::abs(double(a[i][c]) - double(b[i][c])) / (std::abs(double(b[i][c])) + 1e-3));
+    return largest;
+}
+
+TEST_CASE("auto's pilots draw independent samples, and the rest the render's sampler", "[unit][auto]") {
+    // Under the Sobol sampler: the pilot (4 independent samples per pixel) and the rest (Sobol,
+    // from sample index 4) merged, up to the merge's rounding; not the all-independent render.
+    const RenderResult chosen = render_with("auto", "cornell-box/scene.json", 16, "sobol");
+    REQUIRE(chosen.integrator == "pt-mis");
+    REQUIRE(chosen.samples_per_pixel == 16u);
+    const RenderResult pilot = render_with("pt-mis", "cornell-box/scene.json", AutoIntegrator::PilotSamples);
+    const RenderResult rest = render_with("pt-mis", "cornell-box/scene.json", 16 - AutoIntegrator::PilotSamples, "sobol",
+                                          AutoIntegrator::PilotSamples);
+    const Image expected = merge_films(*pilot.film, *rest.film).mean();
+    CHECK(largest_relative_difference(chosen.image, expected) < 1e-4);
+    const RenderResult independent = render_with("pt-mis", "cornell-box/scene.json", 16);
+    CHECK(largest_relative_difference(chosen.image, independent.image) > 1e-2);
 }
