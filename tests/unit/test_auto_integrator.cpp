@@ -47,6 +47,15 @@ RenderResult render_with(const std::string& integrator, const std::string& scene
     return registry.make_integrator(integrator, settings, "test")->render(scene, settings, quiet);
 }
 
+// Largest difference of two images relative to the second's values (+ 1e-3).
+double largest_relative_difference(const Image& a, const Image& b) {
+    double largest = 0.0;
+    for (std::size_t i = 0; i < b.pixel_count(); ++i)
+        for (int c = 0; c < 3; ++c)
+            largest = std::max(largest, std::abs(double(a[i][c]) - double(b[i][c])) / (std::abs(double(b[i][c])) + 1e-3));
+    return largest;
+}
+
 }  // namespace
 
 TEST_CASE("the run that has not converged is the one that disagrees with all, far more than they do", "[unit][compare]") {
@@ -110,21 +119,7 @@ TEST_CASE("auto keeps the chosen pilot's samples: the image is the chosen integr
     REQUIRE(merged.integrator == "bdpt");
     const RenderResult bdpt = render_with("bdpt", "caustic/scene.json", 8);
     REQUIRE(merged.samples_per_pixel == 8u);
-    double largest = 0.0;
-    for (std::size_t i = 0; i < bdpt.image.pixel_count(); ++i)
-        for (int c = 0; c < 3; ++c)
-            largest = std::max(largest, std::abs(double(merged.image[i][c]) - double(bdpt.image[i][c])) /
-                                            (std::abs(double(bdpt.image[i][c])) + 1e-3));
-    CHECK(largest < 1e-4);
-}
-
-// Largest difference of two images relative to the second's values (+ 1e-3).
-static double largest_relative_difference(const Image& a, const Image& b) {
-    double largest = 0.0;
-    for (std::size_t i = 0; i < b.pixel_count(); ++i)
-        for (int c = 0; c < 3; ++c)
-            largest = std::max(largest, std::abs(double(a[i][c]) - double(b[i][c])) / (std::abs(double(b[i][c])) + 1e-3));
-    return largest;
+    CHECK(largest_relative_difference(merged.image, bdpt.image) < 1e-4);
 }
 
 TEST_CASE("auto's pilots draw independent samples, and the rest the render's sampler", "[unit][auto]") {
