@@ -65,12 +65,13 @@ struct SamplerChoice {
 SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
                              const Integrator& integrator, const std::string& integrator_name, const Registry& registry);
 
-// The light sampler of a render, chosen as the sampler is and built over the scene's lights: a
-// named one is refused (InputError at `where`) for an integrator that does not choose lights at
-// shading points; for such an integrator, without a name, none (empty name, null sampler).
 // The light sampler a render names: the command line's (`requested`), else the scene's, else the
 // renderer's default (empty before chapter 03).
 std::string light_sampler_name(const std::string& requested, const Scene& scene, const Registry& registry);
+
+// The light sampler of a render, chosen as the sampler is and built over the scene's lights: a
+// named one is refused (InputError at `where`) for an integrator that does not choose lights at
+// shading points; for such an integrator, without a name, none (empty name, null sampler).
 struct LightSamplerChoice {
     std::string name;
     std::shared_ptr<const LightSampler> sampler;
