@@ -7,6 +7,7 @@
 #include "freezeray/ch06/kdtree_accelerator.hpp"
 #include "freezeray/ch06/kdtree_builder.hpp"
 #include "freezeray/ch06/kdtree_settings.hpp"
+#include "freezeray/ch06/split_events.hpp"
 #include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/ch03/register_chapter03.hpp"
@@ -16,9 +17,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <random>
 
 using namespace freezeray;
 using namespace freezeray::testing;
@@ -144,6 +147,36 @@ TEST_CASE("kdtree: two builds of a scene give identical trees", "[unit][kdtree]"
     CHECK(first.tree().nodes.size() > 100);
     CHECK(first.tree().nodes == second.tree().nodes);
     CHECK(first.tree().leaf_triangles == second.tree().leaf_triangles);
+}
+
+TEST_CASE("kdtree: the root's radix sort gives the order of operator<", "[unit][kdtree]") {
+    // Positions drawn from a few values, so that many events share a position (and type),
+    // with both zeros, which compare equal, negatives, huge and tiny ones, and flat boxes
+    // (planar events). Events are added in triangle order, as the build adds the root's.
+    const std::vector<float> values{-0.0f, 0.0f, -1e30f, -2.5f, -1e-30f, 1e-38f, 0.75f, 1.0f, 3e7f, 1e30f};
+    std::mt19937 random(43);
+    std::uniform_int_distribution<std::size_t> pick(0, values.size() - 1);
+    ch06::NodeEvents events;
+    for (std::uint32_t triangle = 0; triangle < 20000; ++triangle) {
+        Bounds3 box;
+        box.expand(Vec3(values[pick(random)], values[pick(random)], values[pick(random)]));
+        box.expand(Vec3(values[pick(random)], values[pick(random)], values[pick(random)]));
+        ch06::add_triangle_events(events, triangle, box);
+    }
+    ch06::NodeEvents by_radix = events, by_comparison = events;
+    ch06::sort_events_added_in_triangle_order(by_radix);
+    ch06::sort_events(by_comparison);
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        REQUIRE(by_radix[axis].size() == by_comparison[axis].size());
+        CHECK(std::count_if(by_radix[axis].begin(), by_radix[axis].end(),
+                            [](const ch06::SplitEvent& e) { return e.type == ch06::EventType::Planar; }) > 1000);
+        bool same = true;
+        for (std::size_t i = 0; i < by_radix[axis].size(); ++i) {
+            const ch06::SplitEvent &a = by_radix[axis][i], &b = by_comparison[axis][i];
+            same = same && a.triangle == b.triangle && a.type == b.type && a.position == b.position;
+        }
+        CHECK(same);
+    }
 }
 
 TEST_CASE("kdtree: a build on several threads gives the tree of a build on one", "[unit][kdtree]") {

@@ -59,6 +59,9 @@ std::optional<Bounds3> clip_triangle_to_box(const Vec3& p0, const Vec3& p1, cons
         const bool keep_above = plane % 2 == 0;  // min planes keep what is above them
         const double value = keep_above ? box.min[axis] : box.max[axis];
         auto inside = [&](const glm::dvec3& v) { return keep_above ? v[axis] >= value : v[axis] <= value; };
+        int inside_count = 0;
+        for (int i = 0; i < polygon.count; ++i) inside_count += inside(polygon.vertices[static_cast<std::size_t>(i)]);
+        if (inside_count == polygon.count) continue;  // the plane cuts nothing off
         ClipPolygon clipped;
         for (int i = 0; i < polygon.count; ++i) {
             const glm::dvec3& a = polygon.vertices[static_cast<std::size_t>(i)];

@@ -62,6 +62,7 @@ public:
         NodeEvents events;
         Bounds3 bounds;
         std::size_t count = 0;
+        // In increasing triangle order, as sort_events_added_in_triangle_order needs.
         for (std::size_t i = 0; i < triangles_.size(); ++i) {
             const TriangleVertices& t = triangles_[i];
             if (!is_finite(t.p0) || !is_finite(t.p1) || !is_finite(t.p2)) {
@@ -78,7 +79,7 @@ public:
         }
         statistics_.triangles = triangles_.size();
         if (count == 0) return;  // no nodes: every ray misses
-        sort_events(events);  // the only full sort of the build
+        sort_events_added_in_triangle_order(events);  // the only full sort of the build
         tree_.bounds = bounds;
         depth_limit_ = effective_max_depth(settings_, count);
         statistics_.depth_limit = depth_limit_;

@@ -5,6 +5,8 @@
 #include "freezeray/ch06/clip_triangle.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <utility>
 
 namespace freezeray::ch06 {
 
@@ -22,6 +24,49 @@ void add_triangle_events(NodeEvents& events, std::uint32_t triangle, const Bound
 
 void sort_events(NodeEvents& events) {
     for (auto& list : events) std::sort(list.begin(), list.end());
+}
+
+namespace {
+
+// An event's position and type as one unsigned number in the order of operator<: the float's
+// bits with the sign bit flipped for positives and all bits flipped for negatives (so that
+// unsigned order is numeric order), -0 counted as +0 (they compare equal), the type below them.
+std::uint64_t sort_key(const SplitEvent& e) {
+    const std::uint32_t bits = std::bit_cast<std::uint32_t>(e.position + 0.0f);  // -0 + 0 is +0
+    const std::uint32_t ordered = (bits & 0x80000000u) != 0 ? ~bits : bits | 0x80000000u;
+    return (std::uint64_t{ordered} << 2) | static_cast<std::uint64_t>(e.type);
+}
+
+// Least significant digit first, each pass a stable counting sort on the next 12 of the key's
+// 34 bits: after the last pass the list is in key order, equal keys in the order they came.
+void radix_sort(std::vector<SplitEvent>& list) {
+    constexpr int DigitBits = 12, KeyBits = 34;
+    constexpr std::size_t Digits = std::size_t{1} << DigitBits;
+    const std::size_t n = list.size();
+    std::vector<std::uint64_t> keys(n), next_keys(n);
+    std::vector<SplitEvent> next(n);
+    for (std::size_t i = 0; i < n; ++i) keys[i] = sort_key(list[i]);
+    std::vector<std::size_t> start(Digits);
+    for (int shift = 0; shift < KeyBits; shift += DigitBits) {
+        auto digit = [shift](std::uint64_t key) { return static_cast<std::size_t>(key >> shift) & (Digits - 1); };
+        std::fill(start.begin(), start.end(), 0);
+        for (const std::uint64_t key : keys) ++start[digit(key)];
+        std::size_t sum = 0;
+        for (std::size_t& s : start) sum += std::exchange(s, sum);  // counts to where each digit starts
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t to = start[digit(keys[i])]++;
+            next[to] = list[i];
+            next_keys[to] = keys[i];
+        }
+        list.swap(next);
+        keys.swap(next_keys);
+    }
+}
+
+}  // namespace
+
+void sort_events_added_in_triangle_order(NodeEvents& events) {
+    for (auto& list : events) radix_sort(list);
 }
 
 std::vector<std::uint32_t> triangles_of(const NodeEvents& events) {
@@ -83,11 +128,13 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
     classify_triangles(axis_events, plane, sides);
 
     ChildEvents children;
+    std::size_t cut_count = 0;
     for (const SplitEvent& e : axis_events) {
         if (e.type == EventType::End) continue;  // count each triangle once
         const Side side = sides[e.triangle];
         if (side == Side::Below) ++children.below_count;
         else if (side == Side::Above) ++children.above_count;
+        else ++cut_count;
     }
 
     // BOOK(cut-triangles)
@@ -96,6 +143,10 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
     below_cell.max[plane.axis] = plane.position;
     above_cell.min[plane.axis] = plane.position;
     NodeEvents cut_below, cut_above;
+    for (std::size_t axis = 0; axis < 3; ++axis) {  // at most two events per triangle and axis
+        cut_below[axis].reserve(2 * cut_count);
+        cut_above[axis].reserve(2 * cut_count);
+    }
     for (const SplitEvent& e : axis_events) {
         if (e.type != EventType::Start || sides[e.triangle] != Side::Both) continue;
         const TriangleVertices& t = triangles[e.triangle];
