@@ -164,7 +164,7 @@ TEST_CASE("kdtree: the root's radix sort gives the order of operator<", "[unit][
         ch06::add_triangle_events(events, triangle, box);
     }
     ch06::NodeEvents by_radix = events, by_comparison = events;
-    ch06::sort_events_added_in_triangle_order(by_radix);
+    for (auto& list : by_radix) ch06::sort_events_added_in_triangle_order(list);
     ch06::sort_events(by_comparison);
     for (std::size_t axis = 0; axis < 3; ++axis) {
         REQUIRE(by_radix[axis].size() == by_comparison[axis].size());

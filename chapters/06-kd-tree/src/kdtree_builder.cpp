@@ -79,11 +79,11 @@ public:
         }
         statistics_.triangles = triangles_.size();
         if (count == 0) return;  // no nodes: every ray misses
-        sort_events_added_in_triangle_order(events);  // the only full sort of the build
         tree_.bounds = bounds;
         depth_limit_ = effective_max_depth(settings_, count);
         statistics_.depth_limit = depth_limit_;
         parallel_depth_ = parallel_depth(settings_.build_threads);
+        sort_root_events(events);
 
         Subtree tree;
         std::vector<Side> sides(triangles_.size(), Side::Both);
@@ -115,6 +115,19 @@ private:
         int depth = 0;
         while ((1 << depth) < threads) ++depth;
         return depth + 2;
+    }
+
+    // The only full sort of the build: the three axes at once when the build may use threads.
+    void sort_root_events(NodeEvents& events) {
+        if (parallel_depth_ == 0 || events[0].size() < 2 * MinimumParallelTriangles) {
+            for (auto& list : events) sort_events_added_in_triangle_order(list);
+            return;
+        }
+        auto x = std::async(std::launch::async, [&] { sort_events_added_in_triangle_order(events[0]); });
+        auto y = std::async(std::launch::async, [&] { sort_events_added_in_triangle_order(events[1]); });
+        sort_events_added_in_triangle_order(events[2]);
+        x.get();
+        y.get();
     }
 
     // BOOK(kdtree-build-node)

@@ -65,9 +65,7 @@ void radix_sort(std::vector<SplitEvent>& list) {
 
 }  // namespace
 
-void sort_events_added_in_triangle_order(NodeEvents& events) {
-    for (auto& list : events) radix_sort(list);
-}
+void sort_events_added_in_triangle_order(std::vector<SplitEvent>& axis_events) { radix_sort(axis_events); }
 
 std::vector<std::uint32_t> triangles_of(const NodeEvents& events) {
     std::vector<std::uint32_t> triangles;
@@ -137,6 +135,8 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
         else ++cut_count;
     }
 
+    const std::size_t below_only = children.below_count, above_only = children.above_count;
+
     // BOOK(cut-triangles)
     // Triangles the plane cuts: clipped to each child's cell, their new events sorted apart.
     Bounds3 below_cell = cell, above_cell = cell;
@@ -160,18 +160,12 @@ ChildEvents split_events(const NodeEvents& events, const SplitPlane& plane, cons
     // END BOOK
 
     for (std::size_t axis = 0; axis < 3; ++axis) {
-        // Triangles on one side keep their events, in order (each list reserved at its final
-        // size: the kept events counted first, and the cut ones known).
-        std::size_t kept_below = 0, kept_above = 0;
-        for (const SplitEvent& e : events[axis]) {
-            const Side side = sides[e.triangle];
-            kept_below += side == Side::Below;
-            kept_above += side == Side::Above;
-        }
+        // Triangles on one side keep their events, in order (each list reserved for two events
+        // per triangle kept, at most, and the cut ones' events).
         auto& below = children.below[axis];
         auto& above = children.above[axis];
-        below.reserve(kept_below + cut_below[axis].size());
-        above.reserve(kept_above + cut_above[axis].size());
+        below.reserve(2 * below_only + cut_below[axis].size());
+        above.reserve(2 * above_only + cut_above[axis].size());
         for (const SplitEvent& e : events[axis]) {
             const Side side = sides[e.triangle];
             if (side == Side::Below) below.push_back(e);
