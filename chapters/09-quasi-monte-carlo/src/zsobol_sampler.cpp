@@ -94,7 +94,7 @@ float ZSobolSampler::sample_1d(std::uint32_t dimension) {
     const std::uint32_t index = sequence_index(dimension, key);
     // One Owen scramble per dimension for the whole tile: a scramble per pixel would undo the
     // quads' complementary blocks.
-    return fraction_to_float(nested_uniform_scramble(reverse_bits(index), static_cast<std::uint32_t>(key >> 32)));
+    return fraction_to_float(scrambled_van_der_corput(index, static_cast<std::uint32_t>(key >> 32)));
 }
 
 Vec2 ZSobolSampler::sample_2d(std::uint32_t dimension) {
@@ -102,7 +102,7 @@ Vec2 ZSobolSampler::sample_2d(std::uint32_t dimension) {
     const std::uint64_t key = dimension_key(dimension);
     const std::uint32_t index = sequence_index(dimension, key);
     const auto scramble_seed = static_cast<std::uint32_t>(key >> 32);
-    return Vec2(fraction_to_float(nested_uniform_scramble(reverse_bits(index), hash_combine(scramble_seed, 0))),
+    return Vec2(fraction_to_float(scrambled_van_der_corput(index, hash_combine(scramble_seed, 0))),
                 fraction_to_float(nested_uniform_scramble(sobol_sample_bits(index, 1), hash_combine(scramble_seed, 1))));
 }
 // END BOOK

@@ -39,6 +39,7 @@ private:
 
     std::uint64_t pixel_key_ = 0;
     std::uint64_t sample_index_ = 0;
+    std::uint32_t reversed_sample_index_ = 0;  // the low 32 bits of sample_index_, reversed
 };
 
 }  // namespace freezeray::ch09
