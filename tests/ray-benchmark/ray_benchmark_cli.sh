@@ -81,6 +81,23 @@ else
     fail "rays read back" "exit status $?: $(cat "$work/table.txt")"
 fi
 
+# --- --order coherent: the same rays sorted, every kind measured, answers as Embree's ---------
+if "$benchmark" "$mesh" --rays "$work/cornell.rays" --accel kdtree --order coherent --json --reps 1 \
+        >"$work/coherent.jsonl" 2>"$work/err.txt"; then
+    if ! python3 - "$work/coherent.jsonl" <<'PY'
+import json, sys
+rows = [json.loads(line) for line in open(sys.argv[1])]
+kd = [r for r in rows if r["accel"] == "kdtree"]
+problems = [] if len(kd) == 3 else [f"{len(kd)} kdtree rows, expected 3"]
+problems += [f"{r['kind']}: {r['differ_from_embree']} differ" for r in kd if r["differ_from_embree"] not in (None, 0)]
+print("\n".join(problems))
+sys.exit(1 if problems else 0)
+PY
+    then fail "coherent order" "rows wrong"; fi
+else
+    fail "coherent order" "exit status $?: $(cat "$work/err.txt")"
+fi
+
 # --- Bad input: exit status 1, a message naming what and where, no output file ---------------
 # expect_failure NAME EXPECTED_TEXT... -- ARGS
 expect_failure() {
@@ -125,6 +142,7 @@ expect_failure "zero threads" "--threads" -- "$mesh" "${camera[@]}" --threads 1,
 expect_failure "zero repetitions" "--reps" -- "$mesh" "${camera[@]}" --reps 0 "${out[@]}"
 expect_failure "not a number" "--reps" -- "$mesh" "${camera[@]}" --reps many "${out[@]}"
 expect_failure "hits into a missing folder" "no/such" "does not exist" -- "$mesh" "${camera[@]}" --hits-out "$work/no/such/out.hits"
+expect_failure "unknown order" "--order" "random" -- "$mesh" "${camera[@]}" --order random "${out[@]}"
 expect_failure "camera with a ray file" "--camera" -- "$mesh" --rays "$work/cornell.rays" --camera 0,0,0,0,0,1,40
 
 if [ $failures -ne 0 ]; then echo "$failures failures"; exit 1; fi

@@ -8,6 +8,7 @@
 #include "hit_file.hpp"
 #include "ray_batch.hpp"
 #include "ray_batch_generator.hpp"
+#include "ray_order.hpp"
 #include "throughput.hpp"
 
 #include "freezeray/chapter_options_cli.hpp"
@@ -45,6 +46,7 @@ struct Options {
     std::string resolution;  // "W" or "WxH"
     std::uint64_t seed = 1;
     std::size_t limit = std::numeric_limits<std::size_t>::max();
+    std::string order = "file";  // or "coherent"
     OptionValues accelerator_options;  // the chapters' accelerator settings (--kdtree-...)
 };
 
@@ -192,7 +194,11 @@ int run(const Options& options, const Registry& registry) {
     notes(options) << "mesh: " << options.mesh << ", " << meshes.front().triangle_count() << " triangles, "
                    << meshes.front().positions.size() << " vertices\n";
 
-    const RayBatches batches = make_batches(options, registry, settings.parameters(), meshes, accelerators.front());
+    RayBatches batches = make_batches(options, registry, settings.parameters(), meshes, accelerators.front());
+    if (options.order == "coherent") {
+        sort_for_coherence(batches, meshes.front().bounds());
+        notes(options) << "order: coherent (each kind sorted by direction octant, then the origin's Morton code)\n";
+    }
     notes(options) << "batches: " << batches.of(RayKind::Primary).size() << " primary, "
                    << batches.of(RayKind::Diffuse).size() << " diffuse, " << batches.of(RayKind::Shadow).size()
                    << " shadow rays"
@@ -269,6 +275,10 @@ int main(int argc, char** argv) {
         ->excludes(rays);
     app.add_option("--seed", options.seed, "random seed of the diffuse and shadow rays (default: 1)")->excludes(rays);
     app.add_option("--limit", options.limit, "trace only the first N rays of each kind");
+    app.add_option("--order", options.order,
+                   "file (as read or made) or coherent (each kind sorted by direction octant, then the Morton code of the "
+                   "origin: how much of the time is spent waiting for memory; default: file)")
+        ->check(CLI::IsMember({"file", "coherent"}));
     ChapterOptions accelerator_settings;  // each accelerator's own settings, as the renderer offers them
     accelerator_settings.declare(app, registry.options(), OptionTarget::Accelerator);
 
