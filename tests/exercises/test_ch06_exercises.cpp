@@ -2,10 +2,13 @@
 // exercise's own function first (so that in a student copy it fails through its own stub), and
 // checks it against exact values; clip-triangle also against an independent computation of the
 // clipped polygon's vertices, near-far-order also by tracing rays through a tree against brute
-// force. Deterministic: no statistical test in this file.
+// force, sah-sweep against every candidate plane counted triangle by triangle. Deterministic: no
+// statistical test in this file.
 #include "freezeray/ch06/clip_triangle.hpp"
 #include "freezeray/ch06/kdtree_accelerator.hpp"
 #include "freezeray/ch06/kdtree_traversal.hpp"
+#include "freezeray/ch06/split_events.hpp"
+#include "freezeray/ch06/split_plane_sweep.hpp"
 #include "freezeray/ch06/surface_area_heuristic.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/ch01/warps.hpp"
@@ -14,10 +17,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <vector>
 
 using namespace freezeray;
@@ -105,6 +110,135 @@ TEST_CASE("ch06/sah-cost", "[exercise]") {
     // A huge cell: no overflow.
     const Bounds3 huge = box(Vec3(-1e30f), Vec3(1e30f));
     CHECK(split_cost(s, huge, 1, 0.0f, 1, 1) == Approx(1.0 + 80.0 * (4.0 / 6.0 * 2)).epsilon(1e-6));
+}
+
+namespace {
+
+// The cheapest plane found without a sweep: at every event position of every axis the cell is
+// not flat along, the triangles below, in and above the plane counted box by box, in the order
+// and with the rules that find_split_plane's comment states (O(N^2), for small nodes only).
+SplitPlane every_candidate(const std::vector<Bounds3>& boxes, const Bounds3& cell, const KdTreeSettings& settings) {
+    SplitPlane best;
+    best.cost = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+        if (cell.min[axis] == cell.max[axis]) continue;
+        std::vector<float> positions;
+        for (const Bounds3& b : boxes) {
+            positions.push_back(b.min[axis]);
+            positions.push_back(b.max[axis]);
+        }
+        std::sort(positions.begin(), positions.end());
+        positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+        for (const float p : positions) {
+            std::size_t below = 0, in = 0, above = 0;
+            for (const Bounds3& b : boxes) {
+                if (b.min[axis] == b.max[axis]) {
+                    below += b.min[axis] < p;
+                    in += b.min[axis] == p;
+                    above += b.min[axis] > p;
+                } else {
+                    below += b.min[axis] < p;
+                    above += b.max[axis] > p;
+                }
+            }
+            auto consider = [&](std::size_t n_below, std::size_t n_above, bool planar_below) {
+                if (p == cell.min[axis] && n_below == 0) return;
+                if (p == cell.max[axis] && n_above == 0) return;
+                const double cost = split_cost(settings, cell, axis, p, intersection_tests(settings, n_below),
+                                               intersection_tests(settings, n_above));
+                if (cost < best.cost) best = SplitPlane{axis, p, planar_below, cost, n_below, n_above};
+            };
+            consider(below + in, above, true);
+            if (in > 0) consider(below, above + in, false);
+        }
+    }
+    return best;
+}
+
+SplitPlane sweep(const std::vector<Bounds3>& boxes, const Bounds3& cell, const KdTreeSettings& settings) {
+    NodeEvents events;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i) add_triangle_events(events, i, boxes[i]);
+    sort_events(events);
+    return find_split_plane(events, cell, boxes.size(), settings);
+}
+
+std::string describe(const SplitPlane& p) {
+    return "axis " + std::to_string(p.axis) + " at " + std::to_string(p.position) + (p.planar_below ? " (in-plane below)" : " (in-plane above)") +
+           ", cost " + std::to_string(p.cost) + ", " + std::to_string(p.below_count) + " below, " + std::to_string(p.above_count) + " above";
+}
+
+bool same_plane(const SplitPlane& a, const SplitPlane& b) {
+    if (a.axis != b.axis) return false;
+    if (a.axis < 0) return true;
+    return a.position == b.position && a.planar_below == b.planar_below && a.cost == b.cost &&
+           a.below_count == b.below_count && a.above_count == b.above_count;
+}
+
+}  // namespace
+
+TEST_CASE("ch06/sah-sweep", "[exercise]") {
+    KdTreeSettings settings;  // set here, whatever the defaults are
+    settings.traversal_cost = 1.0f;
+    settings.intersection_cost = 80.0f;
+    settings.empty_bonus = 0.5f;
+    const Bounds3 cell = box(Vec3(0.0f), Vec3(4.0f));
+
+    // Two clusters apart along y: the plane goes between them, at the end of the lower one.
+    const std::vector<Bounds3> apart{box(Vec3(0.0f), Vec3(4.0f, 1.0f, 4.0f)), box(Vec3(0.0f, 0.5f, 0.0f), Vec3(4.0f, 1.0f, 4.0f)),
+                                     box(Vec3(0.0f, 3.0f, 0.0f), Vec3(4.0f)), box(Vec3(0.0f, 3.5f, 0.0f), Vec3(4.0f))};
+    const SplitPlane split = sweep(apart, cell, settings);
+    INFO("found " << describe(split) << "; expected " << describe(every_candidate(apart, cell, settings)));
+    REQUIRE(split.axis == 1);
+    CHECK(split.position == 1.0f);
+    CHECK(split.below_count == 2);
+    CHECK(split.above_count == 2);
+    CHECK(same_plane(split, every_candidate(apart, cell, settings)));
+
+    // One triangle filling the cell: no plane separates anything.
+    CHECK(sweep({cell}, cell, settings).axis == -1);
+
+    // A floor lying in z = 0 under a box: the floor goes below a plane at z = 0 only if that pays.
+    const std::vector<Bounds3> floor_and_box{box(Vec3(0.0f), Vec3(4.0f, 4.0f, 0.0f)), box(Vec3(1.0f, 1.0f, 2.0f), Vec3(3.0f))};
+    CHECK(same_plane(sweep(floor_and_box, cell, settings), every_candidate(floor_and_box, cell, settings)));
+
+    // Random nodes: boxes on a coarse grid, so that positions are shared and many boxes are flat
+    // (triangles lying in planes), in cells flat along one axis too, costed per triangle and per
+    // packet of 4, with and without the bonus.
+    PCG32 random(61, 6);
+    int compared = 0, above_choices = 0;
+    for (int node = 0; node < 400; ++node) {
+        const bool flat_cell = node % 5 == 4;
+        const int flat_axis = node % 3;
+        Bounds3 node_cell = cell;
+        if (flat_cell) node_cell.max[flat_axis] = node_cell.min[flat_axis] = 2.0f;
+        KdTreeSettings s = settings;
+        s.triangles_per_test = node % 2 == 0 ? 1 : 4;
+        s.empty_bonus = node % 3 == 0 ? 0.0f : 0.5f;
+        s.intersection_cost = node % 4 == 0 ? 2.0f : 80.0f;
+        std::vector<Bounds3> boxes;
+        const std::uint32_t count = 1 + random.next_below(30);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            Bounds3 b;
+            for (int k = 0; k < 2; ++k)
+                b.expand(Vec3(0.5f * static_cast<float>(random.next_below(9)), 0.5f * static_cast<float>(random.next_below(9)),
+                              0.5f * static_cast<float>(random.next_below(9))));
+            if (random.next_below(3) == 0) {  // flat along a random axis
+                const int a = static_cast<int>(random.next_below(3));
+                b.max[a] = b.min[a];
+            }
+            if (flat_cell) b.min[flat_axis] = b.max[flat_axis] = 2.0f;
+            boxes.push_back(b);
+        }
+        const SplitPlane found = sweep(boxes, node_cell, s);
+        const SplitPlane expected = every_candidate(boxes, node_cell, s);
+        INFO("node " << node << " of " << count << " triangles: found " << describe(found) << "; expected " << describe(expected));
+        REQUIRE(same_plane(found, expected));
+        CHECK((!flat_cell || found.axis != flat_axis));
+        ++compared;
+        above_choices += found.axis >= 0 && !found.planar_below;
+    }
+    CHECK(compared == 400);
+    CHECK(above_choices > 0);  // the cases reached the choice of putting in-plane triangles above
 }
 
 TEST_CASE("ch06/clip-triangle", "[exercise]") {

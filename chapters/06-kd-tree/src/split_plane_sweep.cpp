@@ -11,6 +11,7 @@ namespace freezeray::ch06 {
 // BOOK(split-plane-sweep)
 SplitPlane find_split_plane(const NodeEvents& events, const Bounds3& cell, std::size_t triangle_count,
                             const KdTreeSettings& settings) {
+    // EXERCISE(ch06/sah-sweep): the sweep of book chapter 06, "The sweep", as find_split_plane's comment in split_plane_sweep.hpp states it: every plane through an event on each axis the cell is not flat along, its counts below, in and above it from the events met so far, both sides for the triangles lying in it, costed with split_cost; the cheapest, first found on ties
     SplitPlane best;
     best.cost = std::numeric_limits<double>::infinity();
     auto consider = [&](int axis, float position, std::size_t below, std::size_t above, bool planar_below) {
@@ -43,6 +44,7 @@ SplitPlane find_split_plane(const NodeEvents& events, const Bounds3& cell, std::
         }
     }
     return best;
+    // END EXERCISE
 }
 // END BOOK
 
