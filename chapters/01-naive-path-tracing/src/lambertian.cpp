@@ -10,7 +10,7 @@ namespace freezeray::ch01 {
 // conservation (the integral of f cos(theta) over the hemisphere is the albedo) makes it
 // albedo / pi. It reflects on both sides of the surface, never through it.
 Spectrum LambertianBSDF::eval(const Vec3& wo, const Vec3& wi) const {
-    // EXERCISE(ch01/lambertian-brdf): return the Lambertian BRDF value for wo and wi (zero unless both are on the same side)
+    // EXERCISE(ch01/lambertian-brdf): the Lambertian BRDF of book chapter 01, "The Lambertian surface": its value for the pair (wo, wi) in the local frame, zero unless both lie on the same side
     if (!same_hemisphere(wo, wi)) return Spectrum(0.0f);
     return albedo_ * InvPi;
     // END EXERCISE

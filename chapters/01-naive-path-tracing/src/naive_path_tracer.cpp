@@ -43,7 +43,7 @@ Spectrum NaivePathTracer::li(const Ray& camera_ray, const Scene& scene, Sampler&
         const Frame frame(hit->shading_normal);
         const Vec3 wo = frame.to_local(wo_world);
         const auto [wi, pdf] = sample_naive_direction(wo, bsdf.flags(), sampler.get_2d(VertexDimension::BsdfDirection));
-        // EXERCISE(ch01/path-throughput): multiply the throughput by the Monte Carlo weight of this bounce, f(wo, wi) |cos theta_i| / pdf
+        // EXERCISE(ch01/path-throughput): update the throughput for this bounce, as the Monte Carlo estimator of book chapter 01 ("The Monte Carlo estimator") weighs a sampled direction: the BRDF, the cosine term and the sampling density
         throughput *= bsdf.eval(wo, wi) * abs_cos_theta(wi) / pdf;
         // END EXERCISE
         if (is_black(throughput)) break;

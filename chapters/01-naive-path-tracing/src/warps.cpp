@@ -12,7 +12,7 @@ namespace freezeray::ch01 {
 // Inverting the CDF of the uniform density 1/(2 pi) over the hemisphere gives cos(theta) = u.x,
 // uniform in [0, 1], and phi = 2 pi u.y (PBR 3rd ed., eq. 13.6).
 Vec3 sample_uniform_hemisphere(const Vec2& u) {
-    // EXERCISE(ch01/uniform-hemisphere): map u in [0,1)^2 to a direction uniformly distributed over the hemisphere z >= 0
+    // EXERCISE(ch01/uniform-hemisphere): map u in [0,1)^2 to a direction on the hemisphere z >= 0 with constant density, by the inversion method of book chapter 01, "Choosing directions uniformly"
     const float cos_theta = u.x;
     const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
     const float phi = 2.0f * Pi * u.y;

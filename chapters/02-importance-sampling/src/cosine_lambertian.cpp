@@ -29,7 +29,7 @@ Vec2 sample_concentric_disk(const Vec2& u) {
 // density cos(theta) / pi per solid angle, because the projection onto the disk multiplies solid
 // angle by cos(theta) (PBR 3rd ed., section 13.6.3).
 Vec3 sample_cosine_hemisphere(const Vec2& u) {
-    // EXERCISE(ch02/cosine-hemisphere): return a direction on the hemisphere z >= 0 with density cos(theta) / pi
+    // EXERCISE(ch02/cosine-hemisphere): map u in [0,1)^2 to a direction on the hemisphere z >= 0 whose density is proportional to cos(theta), as book chapter 02, "Lambertian, cosine-weighted", derives it
     const Vec2 d = sample_concentric_disk(u);
     const float z = std::sqrt(std::max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
     return Vec3(d.x, d.y, z);

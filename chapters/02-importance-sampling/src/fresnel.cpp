@@ -34,7 +34,7 @@ std::optional<Vec3> refract(const Vec3& w, const Vec3& n, float eta) {
 //     r_perpendicular = (cos_i - eta cos_t) / (cos_i + eta cos_t),
 // with cos_t from Snell's law; unpolarised light reflects the mean of their squares.
 float fresnel_dielectric(float cos_theta_i, float eta) {
-    // EXERCISE(ch02/dielectric-fresnel): return the unpolarised Fresnel reflectance (1 on total internal reflection; cos_theta_i < 0 means the light comes from inside: invert eta)
+    // EXERCISE(ch02/dielectric-fresnel): the unpolarised Fresnel reflectance of a smooth dielectric, book chapter 02, "Fresnel reflectance": 1 on total internal reflection; cos_theta_i < 0 means the light arrives from inside (the ratio of indices turns over)
     cos_theta_i = std::clamp(cos_theta_i, -1.0f, 1.0f);
     if (cos_theta_i < 0.0f) {
         eta = 1.0f / eta;

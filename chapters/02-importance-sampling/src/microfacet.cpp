@@ -71,7 +71,7 @@ float TrowbridgeReitz::pdf(const Vec3& w, const Vec3& wm) const { return D(w, wm
 // the point onto the hemisphere, and stretch its normal back. Visible normals are sampled exactly,
 // with density D(w, wm), whatever w.
 Vec3 TrowbridgeReitz::sample_visible_normal(const Vec3& w, const Vec2& u) const {
-    // EXERCISE(ch02/ggx-visible-normals): return a microfacet normal distributed as the normals visible from w (Heitz 2018)
+    // EXERCISE(ch02/ggx-visible-normals): sample a microfacet normal from the distribution of the normals visible from w, book chapter 02, "Rough surfaces: GGX microfacets" (Heitz 2018)
     // Section 3.2: the view direction in the hemisphere configuration, on its upper side.
     Vec3 wh = glm::normalize(Vec3(alpha_x_ * w.x, alpha_y_ * w.y, w.z));
     if (wh.z < 0.0f) wh = -wh;

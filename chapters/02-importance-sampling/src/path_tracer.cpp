@@ -9,7 +9,7 @@ namespace freezeray::ch02 {
 
 // BOOK(russian-roulette)
 float russian_roulette_continue_probability(const Spectrum& throughput) {
-    // EXERCISE(ch02/russian-roulette): return the probability of continuing: the largest component of the throughput, at most 0.95
+    // EXERCISE(ch02/russian-roulette): the probability of continuing a path, from its throughput, by the rule of book chapter 02, "`pt-is`" (never above 0.95)
     return std::min(0.95f, max_component(throughput));
     // END EXERCISE
 }

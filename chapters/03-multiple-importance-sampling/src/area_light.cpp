@@ -11,7 +11,7 @@ namespace freezeray::ch03 {
 
 // BOOK(area-to-solid-angle)
 float area_to_solid_angle_pdf(float pdf_area, float distance_squared, float cos_light) {
-    // EXERCISE(ch03/area-to-solid-angle): return the solid-angle density: the area density times the squared distance, divided by the cosine at the light
+    // EXERCISE(ch03/area-to-solid-angle): convert a density per unit area on the light into a density per unit solid angle at the shading point, book chapter 03, "Sampling the light instead of the BSDF"
     return pdf_area * distance_squared / cos_light;
     // END EXERCISE
 }

@@ -29,7 +29,7 @@ Vec3 equirectangular_to_direction(const Vec2& uv) {
 // BOOK(environment-pdf)
 float equirectangular_to_solid_angle_pdf(float pdf_uv, float sin_theta) {
     if (sin_theta <= 0.0f) return 0.0f;  // the poles: a line of the image maps to one direction
-    // EXERCISE(ch03/environment-pdf): return the solid-angle density of a direction drawn with density pdf_uv over the image
+    // EXERCISE(ch03/environment-pdf): the solid-angle density of a direction drawn through the environment map's (u, v) parameterisation with density pdf_uv, book chapter 03, "Environment maps" (mind the Jacobian of the mapping)
     return pdf_uv / (2.0f * Pi * Pi * sin_theta);
     // END EXERCISE
 }

@@ -14,7 +14,7 @@ float balance_heuristic(int n_f, float pdf_f, int n_g, float pdf_g) {
 // BOOK(power-heuristic)
 float power_heuristic(int n_f, float pdf_f, int n_g, float pdf_g) {
     const float f = static_cast<float>(n_f) * pdf_f, g = static_cast<float>(n_g) * pdf_g;
-    // EXERCISE(ch03/power-heuristic): return the power heuristic weight (beta = 2) of strategy f
+    // EXERCISE(ch03/power-heuristic): the weight of strategy f against strategy g by Veach's power heuristic with exponent 2, book chapter 03, "Multiple importance sampling"
     if (!(f > 0.0f)) return 0.0f;
     const float ratio = g / f;
     return 1.0f / (1.0f + ratio * ratio);

@@ -6,7 +6,7 @@ namespace freezeray::ch04 {
 
 // BOOK(strategy-ratio)
 double next_strategy_ratio(double ratio, float pdf_reverse, float pdf_forward) {
-    // EXERCISE(ch04/strategy-ratio): multiply the ratio by the reverse density over the forward density, each taken as 1 where it is 0
+    // EXERCISE(ch04/strategy-ratio): one step of the ratio recurrence of book chapter 04, "The ratio recurrence", with the convention it states for densities that are 0 (delta vertices)
     const double reverse = pdf_reverse != 0.0f ? static_cast<double>(pdf_reverse) : 1.0;
     const double forward = pdf_forward != 0.0f ? static_cast<double>(pdf_forward) : 1.0;
     return ratio * reverse / forward;

@@ -42,7 +42,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit&
     if (is_black(f)) return std::nullopt;
     if (scene.occluded(hit.spawn_ray_to(scene.camera->position()))) return std::nullopt;
     const float correction = shading_normal_correction(wo_world, camera->wi, frame.n, hit.geometric_normal);
-    // EXERCISE(ch04/camera-connection): return the connection: beta times f times |cos theta| at the vertex times the shading-normal correction times We / pdf, at the camera sample's raster position
+    // EXERCISE(ch04/camera-connection): the contribution of connecting a light subpath vertex to the camera, and where on the film it lands, book chapter 04, "Light tracing" (the camera's importance, the cosine at the vertex, the shading-normal correction, the densities)
     // beta f |cos theta| We / pdf: pdf = distance^2 / cos(theta_camera) turns the pinhole's
     // importance into the importance arriving here (pbrt-v3, section 16.3.1, eq. 16.17).
     const Spectrum value = beta * f * (abs_cos_theta(to_camera) * correction * camera->importance / camera->pdf);

@@ -10,7 +10,7 @@ namespace freezeray::ch05 {
 
 // BOOK(acceptance-probability)
 float acceptance_probability(float current, float proposed) {
-    // EXERCISE(ch05/acceptance-probability): return min(1, proposed / current), and 1 when the current value is not positive
+    // EXERCISE(ch05/acceptance-probability): the Metropolis-Hastings acceptance probability for a symmetric proposal, book chapter 05, "The Metropolis–Hastings rule", including what happens when the current state has no value
     if (!(current > 0.0f)) return 1.0f;
     return std::min(1.0f, proposed / current);
     // END EXERCISE
@@ -19,7 +19,7 @@ float acceptance_probability(float current, float proposed) {
 
 // BOOK(small-step)
 float small_step(float value, float normal_sample, float sigma, std::uint64_t steps) {
-    // EXERCISE(ch05/small-step): add normal_sample times sigma times the square root of steps, then wrap the result into [0, 1)
+    // EXERCISE(ch05/small-step): perturb one primary sample coordinate as the small step of book chapter 05, "Mutations: small and large steps", describes it (a normal step whose spread grows with the steps skipped), staying in [0, 1)
     const float moved = value + normal_sample * sigma * std::sqrt(static_cast<float>(steps));
     const float wrapped = moved - std::floor(moved);
     return std::min(wrapped, OneMinusEpsilon);  // -1e-9 wraps to 1 - 1e-9, which rounds to 1

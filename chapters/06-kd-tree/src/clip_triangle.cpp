@@ -49,7 +49,7 @@ glm::dvec3 crossing_point(const glm::dvec3& a, const glm::dvec3& b, int axis, do
 
 // BOOK(clip-triangle-to-box)
 std::optional<Bounds3> clip_triangle_to_box(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Bounds3& box) {
-    // EXERCISE(ch06/clip-triangle): clip the triangle against the six planes of the box in turn (keeping points on a plane), and return the bounds of what is left, rounded outward to floats and within the box, or nothing when nothing is left
+    // EXERCISE(ch06/clip-triangle): clip the triangle against the box as book chapter 06, "Perfect splits", describes it (Sutherland–Hodgman, points on a plane kept), and return the bounds of what is left, rounded outward to floats and within the box, or nothing when nothing is left
     ClipPolygon polygon;
     polygon.add(glm::dvec3(p0));
     polygon.add(glm::dvec3(p1));

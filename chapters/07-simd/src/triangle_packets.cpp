@@ -11,7 +11,7 @@ namespace freezeray::ch07 {
 // BOOK(pack-triangles)
 void pack_triangles(const std::vector<ch06::TriangleVertices>& vertices, const std::uint32_t* leaf_triangles,
                     int count, int width, float* coordinates, std::uint32_t* lanes) {
-    // EXERCISE(ch07/structure-of-arrays): for each lane l < width (lanes from count on repeat triangle count - 1), write the triangle's global index to lanes[l] and its vertex v's coordinate on axis a to coordinates[(3 v + a) width + l]
+    // EXERCISE(ch07/structure-of-arrays): write the leaf's triangles into the packet in structure-of-arrays layout, book chapter 07, "Structure of arrays"; the layout and the padding lanes as pack_triangles' comment in triangle_packets.hpp and packet_floats state them
     for (int lane = 0; lane < width; ++lane) {
         const std::uint32_t triangle = leaf_triangles[lane < count ? lane : count - 1];
         lanes[lane] = triangle;

@@ -86,7 +86,7 @@ std::vector<Image> build_mip_pyramid(const Image& image) {
 
 // BOOK(mip-level)
 float mip_level(const Vec2& duv_dx, const Vec2& duv_dy, int width, int height) {
-    // EXERCISE(ch08/mip-level): scale each step by the texture's size (u by width, v by height), take the longer step's length rho, and return log2(rho); return 0 when rho is not above 0
+    // EXERCISE(ch08/mip-level): the MIP level for a pixel's footprint in texture space, book chapter 08, "Choosing the level, and trilinear filtering": the longer of the two steps in texels decides it; 0 for a footprint of nothing
     const Vec2 size(static_cast<float>(width), static_cast<float>(height));
     const float rho = std::max(glm::length(duv_dx * size), glm::length(duv_dy * size));
     if (!(rho > 0.0f)) return 0.0f;

@@ -8,7 +8,7 @@ namespace freezeray::ch09 {
 
 // BOOK(radical-inverse)
 double radical_inverse(std::uint32_t base, std::uint64_t index) {
-    // EXERCISE(ch09/radical-inverse): mirror the base-b digits of index about the radix point: the digit of b^k becomes the digit of b^(-k-1)
+    // EXERCISE(ch09/radical-inverse): the radical inverse of index in base b, book chapter 09, "The radical inverse"
     const double inverse_base = 1.0 / base;
     double value = 0.0;
     double digit_weight = inverse_base;  // b^(-k-1) for the k-th digit

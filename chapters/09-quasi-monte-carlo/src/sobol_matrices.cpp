@@ -56,7 +56,7 @@ GeneratorMatrix sobol_generator_matrix(int dimension) {
         return v;
     }
     const DirectionNumbers& d = direction_numbers(dimension);
-    // EXERCISE(ch09/sobol-direction-numbers): fill the 32 columns of v from the s initial direction numbers d.initial and the recurrence for the others (book chapter 09, "Sobol generator matrices")
+    // EXERCISE(ch09/sobol-direction-numbers): fill the 32 columns of the generator matrix from the initial direction numbers and the recurrence of book chapter 09, "Nets and the Sobol sequence"
     const int s = d.degree;
     for (int k = 0; k < s; ++k) v[k] = d.initial[k] << (31 - k);
     for (int k = s; k < 32; ++k) {

@@ -34,7 +34,7 @@ struct ChildOrder {
 // away from the plane (t_plane < 0) the near child is the one it has left, and only the far one
 // matters. `index` is the node's own index (its below child follows it).
 inline ChildOrder order_children(const KdTreeNode& node, std::uint32_t index, const Ray& ray, const Vec3& inverse_direction) {
-    // EXERCISE(ch06/near-far-order): return the child the ray passes through first (below when the direction grows along the split axis; for a ray parallel to the plane, the side of its origin, below when on the plane), the other second, and the ray's distance to the plane
+    // EXERCISE(ch06/near-far-order): order the children of an interior node for the ray as book chapter 06, "Traversal", does, including a ray parallel to the plane and one starting on it (see order_children's comment), with the ray's distance to the plane
     const int axis = node.split_axis();
     const float split = node.split_position();
     const float t_plane = (split - ray.origin[axis]) * inverse_direction[axis];

@@ -44,7 +44,7 @@ inline double leaf_cost(const KdTreeSettings& settings, std::size_t triangle_cou
 // 2006, the SAH cost C_V(p) with pbrt-v3's form of the bonus), and the bonus (settings.empty_bonus) applies only when one child is empty.
 inline double split_cost(const KdTreeSettings& settings, const Bounds3& cell, int axis, float position,
                          std::size_t below_count, std::size_t above_count) {
-    // EXERCISE(ch06/sah-cost): return the SAH cost of the split: the two children's surface areas relative to the cell's, their triangle counts, the costs of settings and the empty bonus when one child is empty
+    // EXERCISE(ch06/sah-cost): the SAH cost of splitting the cell at this plane, book chapter 06, "The surface area heuristic", with the settings' costs and the empty bonus when one child is empty (see split_cost's comment)
     Bounds3 below = cell, above = cell;
     below.max[axis] = position;
     above.min[axis] = position;

@@ -40,7 +40,7 @@ namespace freezeray::ch07 {
 // rejects a lane where some are negative and some positive).
 template <typename Lanes, typename Mask>
 Mask inside_lanes(const Lanes& u, const Lanes& v, const Lanes& w) {
-    // EXERCISE(ch07/inside-mask): the lanes where u, v and w do not have opposite signs: not (some < 0 and some > 0)
+    // EXERCISE(ch07/inside-mask): the lanes whose ray passes inside (or on the edge of) the triangle, from the signs of u, v and w as book chapter 07, "The watertight test, W at a time", decides it
     const Lanes zero = Lanes::broadcast(0.0f);
     const Mask some_negative = (u < zero) | (v < zero) | (w < zero);
     const Mask some_positive = (u > zero) | (v > zero) | (w > zero);

@@ -32,7 +32,7 @@ private:
 // texels of a tile, 2^(2 tile_log2) of them, too. Shifts and masks, no division.
 // BOOK(tiled-index)
 inline std::size_t tiled_index(int x, int y, int tile_log2, std::size_t tiles_per_row) {
-    // EXERCISE(ch08/tile-offset): the tile (x >> tile_log2, y >> tile_log2) starts at (tile_y * tiles_per_row + tile_x) << (2 tile_log2); the texel is at ((y & mask) << tile_log2) + (x & mask) in it, mask = 2^tile_log2 - 1
+    // EXERCISE(ch08/tile-offset): the offset of texel (x, y) in the tiled layout of book chapter 08, "Where a texel lives": tiles of 2^tile_log2 texels on a side in row order, texels in row order within a tile
     const std::size_t mask = (std::size_t{1} << tile_log2) - 1;
     const std::size_t tile_x = static_cast<std::size_t>(x) >> tile_log2;
     const std::size_t tile_y = static_cast<std::size_t>(y) >> tile_log2;
