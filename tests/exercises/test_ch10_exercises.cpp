@@ -4,7 +4,13 @@
 // behind; a point inside a cluster; a spot-like cone from inside and outside its reach.
 // ch10/tree-path-probability is checked against the probabilities sample() reports for the
 // lights it chooses (its own walk), beside-the-tree lights and lights never reached.
-// Deterministic: no statistical test in this file.
+// ch10/tree-walk is checked against the probability of every light found by enumerating the
+// tree (each choice's reported probability, exactly) and by a chi-square test of which lights
+// 200,000 walks choose at each of 4 points (false-failure rate at most 1e-6 over the four).
+// The other tests are deterministic.
+#include "chi_square.hpp"
+#include "statistics.hpp"
+
 #include "freezeray/ch03/area_light.hpp"
 #include "freezeray/ch03/environment_light.hpp"
 #include "freezeray/ch03/point_light.hpp"
@@ -14,6 +20,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -131,4 +138,127 @@ TEST_CASE("ch10/tree-path-probability", "[exercise]") {
     const ShadingPoint below{Vec3(0.0f, -20.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)};
     for (int i = 0; i < 60; ++i) CHECK(sampler.probability(below, *lights[static_cast<std::size_t>(i)]) == 0.0f);
     CHECK(sampler.probability(below, *lights[60]) > 0.0f);
+}
+
+namespace {
+
+// 60 small triangles facing up (+y) between y = 0 and 1 with random emission, two point lights, a
+// dark one and a constant environment. The mesh outlives the lights that refer to it.
+struct WalkScene {
+    TriangleMesh mesh;
+    std::vector<std::unique_ptr<Light>> lights;
+};
+
+std::unique_ptr<WalkScene> walk_scene(std::uint64_t seed) {
+    auto scene = std::make_unique<WalkScene>();
+    PCG32 random(seed, 1);
+    for (int i = 0; i < 60; ++i) {
+        const Vec3 c(20.0f * random.next_float() - 10.0f, random.next_float(), 20.0f * random.next_float() - 10.0f);
+        const auto base = static_cast<std::uint32_t>(scene->mesh.positions.size());
+        scene->mesh.positions.push_back(c);
+        scene->mesh.positions.push_back(c + Vec3(0.3f, 0.0f, 0.0f));  // wound to face +y
+        scene->mesh.positions.push_back(c + Vec3(0.0f, 0.0f, -0.3f));
+        scene->mesh.triangles.push_back({base, base + 1, base + 2});
+    }
+    for (std::uint32_t i = 0; i < 60; ++i)
+        scene->lights.push_back(std::make_unique<ch03::TriangleLight>(scene->mesh, i, Spectrum(1.0f + 10.0f * random.next_float())));
+    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(-4.0f, 3.0f, 2.0f), Spectrum(5.0f)));
+    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(6.0f, 2.0f, -1.0f), Spectrum(1.0f)));
+    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // dark
+    scene->lights.push_back(std::make_unique<ch03::ConstantEnvironmentLight>(Spectrum(1.0f)));
+    for (std::size_t i = 0; i < scene->lights.size(); ++i) scene->lights[i]->index = static_cast<std::uint32_t>(i);
+    return scene;
+}
+
+// The probability of reaching each leaf's light from the node `index`, by visiting every branch:
+// the children's probabilities from child_probabilities, multiplied from the root down as
+// sample()'s comment says; a branch where neither child sends light leaves its lights at 0.
+void tree_probabilities(const BvhLightSampler& sampler, const ShadingPoint& point, std::uint32_t index, float probability,
+                        std::vector<float>& out) {
+    const std::vector<LightTreeNode>& nodes = sampler.nodes();
+    const LightTreeNode& node = nodes[index];
+    if (node.is_leaf) {
+        out[node.second_child_or_light] = probability;
+        return;
+    }
+    const std::array<float, 2> p = child_probabilities(nodes[index + 1], nodes[node.second_child_or_light], point);
+    if (p[0] < 0.0f) return;
+    tree_probabilities(sampler, point, index + 1, probability * p[0], out);
+    tree_probabilities(sampler, point, node.second_child_or_light, probability * p[1], out);
+}
+
+}  // namespace
+
+TEST_CASE("ch10/tree-walk", "[exercise]") {
+    const std::unique_ptr<WalkScene> scene = walk_scene(17);
+    const std::vector<std::unique_ptr<Light>>& lights = scene->lights;
+    const BvhLightSampler sampler(lights);
+    REQUIRE(sampler.infinite_probability() == 0.5f);
+    REQUIRE(sampler.nodes().size() == 2 * 62 - 1);  // the 62 lights with power, one per leaf
+    const float tree_share = 1.0f - sampler.infinite_probability();
+    const ShadingPoint first{Vec3(1.0f, 4.0f, 1.0f), Vec3(0.0f, 1.0f, 0.0f)};
+    sampler.sample(first, 0.75f);  // the walk itself first (in a student's copy, its stub speaks)
+
+    // Exactly: each choice's reported probability is the product along its path.
+    PCG32 random(23, 4);
+    auto random_point = [&](int k) {
+        return ShadingPoint{Vec3(24.0f * random.next_float() - 12.0f, 8.0f * random.next_float() - 3.0f, 24.0f * random.next_float() - 12.0f),
+                            k % 3 == 0 ? Vec3(0.0f) : glm::normalize(Vec3(random.next_float() - 0.5f, 1.0f, 0.2f))};
+    };
+    int choices = 0, nothing = 0;
+    for (int k = 0; k < 300; ++k) {
+        const ShadingPoint point = random_point(k);
+        std::vector<float> expected(lights.size(), 0.0f);
+        tree_probabilities(sampler, point, 0, tree_share, expected);
+        for (int j = 0; j < 20; ++j) {
+            const float u = 0.5f + 0.5f * random.next_float();  // in the tree's share
+            const std::optional<LightChoice> choice = sampler.sample(point, u);
+            INFO("point (" << point.position.x << ", " << point.position.y << ", " << point.position.z << "), u = " << u);
+            if (!choice) {
+                ++nothing;  // a branch that sends no light here
+                continue;
+            }
+            ++choices;
+            REQUIRE(choice->light != nullptr);
+            INFO("light " << choice->light->index << ": its path's probability is " << expected[choice->light->index]);
+            CHECK(choice->probability == expected[choice->light->index]);
+            CHECK(expected[choice->light->index] > 0.0f);
+        }
+    }
+    CHECK(choices > 4000);  // of 6000 walks; points below the triangles reach only the point lights
+    CHECK(nothing < choices);
+
+    // In proportion: which light 200,000 walks choose (u uniform in [0, 1), the environment's half
+    // included), against those probabilities. Each of the four points is tested at 1e-6 / 4.
+    const std::vector<ShadingPoint> points{{Vec3(0.0f, 4.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f)},
+                                           {Vec3(-8.0f, 0.5f, 6.0f), Vec3(0.0f)},
+                                           {Vec3(5.0f, 1.5f, -3.0f), glm::normalize(Vec3(1.0f, 1.0f, 0.0f))},
+                                           {Vec3(9.0f, -2.0f, 9.0f), Vec3(0.0f, 1.0f, 0.0f)}};
+    constexpr int walks = 200000;
+    for (const ShadingPoint& point : points) {
+        std::vector<float> probabilities(lights.size(), 0.0f);
+        tree_probabilities(sampler, point, 0, tree_share, probabilities);
+        probabilities[63] = sampler.infinite_probability();  // the environment, beside the tree
+        const std::size_t none = lights.size();              // the cell of walks that choose nothing
+        std::vector<double> observed(none + 1, 0.0), expected(none + 1, 0.0);
+        double sum = 0.0;
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            expected[i] = walks * static_cast<double>(probabilities[i]);
+            sum += probabilities[i];
+        }
+        expected[none] = walks * std::max(0.0, 1.0 - sum);
+        for (int k = 0; k < walks; ++k) {
+            const std::optional<LightChoice> choice = sampler.sample(point, random.next_float());
+            observed[choice ? choice->light->index : none] += 1.0;
+        }
+        std::uint64_t in_empty_cells = 0;  // chosen where its probability is 0
+        const auto [statistic, cells] = stats::pooled_statistic(observed, expected, 5.0, in_empty_cells);
+        const double p_value = stats::chi_square_survival(statistic, cells - 1);
+        INFO("point (" << point.position.x << ", " << point.position.y << ", " << point.position.z << "): chi^2 = " << statistic
+                       << " over " << cells << " cells, p = " << p_value << "; " << in_empty_cells
+                       << " walks chose a light whose probability is 0");
+        CHECK(in_empty_cells == 0u);
+        CHECK(cells >= 3);  // below the triangles: the two point lights and the environment
+        CHECK(p_value > stats::exercise_test_alpha / 4.0);
+    }
 }

@@ -150,6 +150,7 @@ std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, fl
         const std::size_t i = std::min(static_cast<std::size_t>(u / infinite_probability_ * static_cast<float>(n)), n - 1);
         return LightChoice{infinite_lights_[i], infinite_probability_ / static_cast<float>(n)};
     }
+    // EXERCISE(ch10/tree-walk): the walk of book chapter 10, "The walk and its probability", as sample's comment in bvh_light_sampler.hpp states it: u rescaled to the tree's share, one child at each interior node in proportion to child_probabilities, u reused, the probability multiplied from the root down; nothing where no child can send light, and a tree of one light chosen only where it can
     if (nodes_.empty()) return std::nullopt;
     u = std::min((u - infinite_probability_) / (1.0f - infinite_probability_), OneMinusEpsilon);
     float probability = 1.0f - infinite_probability_;
@@ -169,6 +170,7 @@ std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, fl
     // A tree of one light: its own importance was never looked at.
     if (index == 0 && importance(nodes_[0].bounds, point) <= 0.0f) return std::nullopt;
     return LightChoice{lights_[nodes_[index].second_child_or_light].get(), probability};
+    // END EXERCISE
 }
 // END BOOK
 

@@ -31,6 +31,12 @@ class BvhLightSampler final : public LightSampler {
 public:
     explicit BvhLightSampler(const std::vector<std::unique_ptr<Light>>& lights);
 
+    // A light beside the tree with probability infinite_probability(); otherwise u, rescaled to
+    // [0, 1), walks the tree from the root: at each interior node it goes to one child with the
+    // probabilities of child_probabilities, u rescaled to [0, 1) again within the child's share,
+    // and the choice's probability is 1 - infinite_probability() times the probabilities of the
+    // children taken, multiplied from the root down (so that probability() gives the same float).
+    // Nothing where neither child of a node can send light to the point.
     std::optional<LightChoice> sample(const ShadingPoint& point, float u) const override;
     float probability(const ShadingPoint& point, const Light& light) const override;
     std::vector<std::string> description() const override;
