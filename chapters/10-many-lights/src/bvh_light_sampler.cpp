@@ -176,7 +176,7 @@ std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, fl
 
 // BOOK(bvh-probability)
 float BvhLightSampler::probability(const ShadingPoint& point, const Light& light) const {
-    // EXERCISE(ch10/tree-path-probability): the probability that sample() chooses `light` at `point`, as book chapter 10's "The probability of a light" derives it: for a light beside the tree its share of infinite_probability_; for one in the tree, the walk along its recorded path (paths_) multiplying the probabilities of the children taken; 0 where sample() could never reach it
+    // EXERCISE(ch10/tree-path-probability): the probability that sample() chooses `light` at `point`, as book chapter 10, "The walk and its probability", derives it: for a light beside the tree its share of infinite_probability_; for one in the tree, the walk along its recorded path (paths_) multiplying the probabilities of the children taken; 0 where sample() could never reach it
     if (light.index >= paths_.size()) return 0.0f;
     if (is_infinite_[light.index]) return infinite_probability_ / static_cast<float>(infinite_lights_.size());
     const TreePath& path = paths_[light.index];

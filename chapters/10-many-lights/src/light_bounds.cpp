@@ -103,7 +103,7 @@ LightBounds bounds_union(const LightBounds& a, const LightBounds& b) {
 
 // BOOK(light-importance)
 float importance(const LightBounds& bounds, const ShadingPoint& point) {
-    // EXERCISE(ch10/cluster-importance): the bound of book chapter 10, "The importance of a cluster": phi, times the largest emitter cosine towards the point over the cluster's cone and extent (0 beyond theta_e, with ConeSlack), times the largest |cos| at the point's normal (at least ReceiverFloor), over the squared distance to the box's centre (at least the squared half-diagonal); never 0 where some light may reach the point
+    // EXERCISE(ch10/cluster-importance): the bound on what the cluster can send to the point, book chapter 10, "The importance of a cluster", as importance's comment in light_bounds.hpp states it; never 0 where some light of the cluster may reach the point
     if (bounds.phi <= 0.0f) return 0.0f;
     const Vec3 centre = (bounds.box.min + bounds.box.max) * 0.5f;
     const Vec3 to_point = point.position - centre;
