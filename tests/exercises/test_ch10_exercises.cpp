@@ -93,27 +93,42 @@ TEST_CASE("ch10/cluster-importance", "[exercise]") {
     CHECK(importance(dark, {Vec3(5.0f), Vec3(0.0f)}) == 0.0f);
 }
 
-TEST_CASE("ch10/tree-path-probability", "[exercise]") {
-    // 60 small triangles facing up (+y) between y = 0 and 1, two point lights, a dark one and a
-    // constant environment.
+namespace {
+
+// 60 small triangles facing up (+y) between y = 0 and 1 with random emission (positions and
+// emissions drawn from `random`), two point lights, a dark one and a constant environment. The
+// mesh outlives the lights that refer to it.
+struct LightTreeScene {
     TriangleMesh mesh;
-    PCG32 random(5, 1);
+    std::vector<std::unique_ptr<Light>> lights;
+};
+
+std::unique_ptr<LightTreeScene> light_tree_scene(PCG32& random) {
+    auto scene = std::make_unique<LightTreeScene>();
     for (int i = 0; i < 60; ++i) {
         const Vec3 c(20.0f * random.next_float() - 10.0f, random.next_float(), 20.0f * random.next_float() - 10.0f);
-        const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-        mesh.positions.push_back(c);
-        mesh.positions.push_back(c + Vec3(0.3f, 0.0f, 0.0f));  // wound to face +y
-        mesh.positions.push_back(c + Vec3(0.0f, 0.0f, -0.3f));
-        mesh.triangles.push_back({base, base + 1, base + 2});
+        const auto base = static_cast<std::uint32_t>(scene->mesh.positions.size());
+        scene->mesh.positions.push_back(c);
+        scene->mesh.positions.push_back(c + Vec3(0.3f, 0.0f, 0.0f));  // wound to face +y
+        scene->mesh.positions.push_back(c + Vec3(0.0f, 0.0f, -0.3f));
+        scene->mesh.triangles.push_back({base, base + 1, base + 2});
     }
-    std::vector<std::unique_ptr<Light>> lights;
     for (std::uint32_t i = 0; i < 60; ++i)
-        lights.push_back(std::make_unique<ch03::TriangleLight>(mesh, i, Spectrum(1.0f + 10.0f * random.next_float())));
-    lights.push_back(std::make_unique<ch03::PointLight>(Vec3(-4.0f, 3.0f, 2.0f), Spectrum(5.0f)));
-    lights.push_back(std::make_unique<ch03::PointLight>(Vec3(6.0f, 2.0f, -1.0f), Spectrum(1.0f)));
-    lights.push_back(std::make_unique<ch03::PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // dark
-    lights.push_back(std::make_unique<ch03::ConstantEnvironmentLight>(Spectrum(1.0f)));
-    for (std::size_t i = 0; i < lights.size(); ++i) lights[i]->index = static_cast<std::uint32_t>(i);
+        scene->lights.push_back(std::make_unique<ch03::TriangleLight>(scene->mesh, i, Spectrum(1.0f + 10.0f * random.next_float())));
+    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(-4.0f, 3.0f, 2.0f), Spectrum(5.0f)));
+    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(6.0f, 2.0f, -1.0f), Spectrum(1.0f)));
+    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // dark
+    scene->lights.push_back(std::make_unique<ch03::ConstantEnvironmentLight>(Spectrum(1.0f)));
+    for (std::size_t i = 0; i < scene->lights.size(); ++i) scene->lights[i]->index = static_cast<std::uint32_t>(i);
+    return scene;
+}
+
+}  // namespace
+
+TEST_CASE("ch10/tree-path-probability", "[exercise]") {
+    PCG32 random(5, 1);  // the scene's numbers first, then the points'
+    const std::unique_ptr<LightTreeScene> scene = light_tree_scene(random);
+    const std::vector<std::unique_ptr<Light>>& lights = scene->lights;
     const BvhLightSampler sampler(lights);
     REQUIRE(sampler.infinite_probability() == 0.5f);
 
@@ -142,34 +157,6 @@ TEST_CASE("ch10/tree-path-probability", "[exercise]") {
 
 namespace {
 
-// 60 small triangles facing up (+y) between y = 0 and 1 with random emission, two point lights, a
-// dark one and a constant environment. The mesh outlives the lights that refer to it.
-struct WalkScene {
-    TriangleMesh mesh;
-    std::vector<std::unique_ptr<Light>> lights;
-};
-
-std::unique_ptr<WalkScene> walk_scene(std::uint64_t seed) {
-    auto scene = std::make_unique<WalkScene>();
-    PCG32 random(seed, 1);
-    for (int i = 0; i < 60; ++i) {
-        const Vec3 c(20.0f * random.next_float() - 10.0f, random.next_float(), 20.0f * random.next_float() - 10.0f);
-        const auto base = static_cast<std::uint32_t>(scene->mesh.positions.size());
-        scene->mesh.positions.push_back(c);
-        scene->mesh.positions.push_back(c + Vec3(0.3f, 0.0f, 0.0f));  // wound to face +y
-        scene->mesh.positions.push_back(c + Vec3(0.0f, 0.0f, -0.3f));
-        scene->mesh.triangles.push_back({base, base + 1, base + 2});
-    }
-    for (std::uint32_t i = 0; i < 60; ++i)
-        scene->lights.push_back(std::make_unique<ch03::TriangleLight>(scene->mesh, i, Spectrum(1.0f + 10.0f * random.next_float())));
-    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(-4.0f, 3.0f, 2.0f), Spectrum(5.0f)));
-    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(6.0f, 2.0f, -1.0f), Spectrum(1.0f)));
-    scene->lights.push_back(std::make_unique<ch03::PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // dark
-    scene->lights.push_back(std::make_unique<ch03::ConstantEnvironmentLight>(Spectrum(1.0f)));
-    for (std::size_t i = 0; i < scene->lights.size(); ++i) scene->lights[i]->index = static_cast<std::uint32_t>(i);
-    return scene;
-}
-
 // The probability of reaching each leaf's light from the node `index`, by visiting every branch:
 // the children's probabilities from child_probabilities, multiplied from the root down as
 // sample()'s comment says; a branch where neither child sends light leaves its lights at 0.
@@ -190,7 +177,8 @@ void tree_probabilities(const BvhLightSampler& sampler, const ShadingPoint& poin
 }  // namespace
 
 TEST_CASE("ch10/tree-walk", "[exercise]") {
-    const std::unique_ptr<WalkScene> scene = walk_scene(17);
+    PCG32 scene_random(17, 1);
+    const std::unique_ptr<LightTreeScene> scene = light_tree_scene(scene_random);
     const std::vector<std::unique_ptr<Light>>& lights = scene->lights;
     const BvhLightSampler sampler(lights);
     REQUIRE(sampler.infinite_probability() == 0.5f);

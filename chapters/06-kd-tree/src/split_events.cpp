@@ -37,9 +37,11 @@ std::uint64_t sort_key(const SplitEvent& e) {
     return (std::uint64_t{ordered} << 2) | static_cast<std::uint64_t>(e.type);
 }
 
+}  // namespace
+
 // Least significant digit first, each pass a stable counting sort on the next 12 of the key's
 // 34 bits: after the last pass the list is in key order, equal keys in the order they came.
-void radix_sort(std::vector<SplitEvent>& list) {
+void sort_events_added_in_triangle_order(std::vector<SplitEvent>& list) {
     constexpr int DigitBits = 12, KeyBits = 34;
     constexpr std::size_t Digits = std::size_t{1} << DigitBits;
     const std::size_t n = list.size();
@@ -62,10 +64,6 @@ void radix_sort(std::vector<SplitEvent>& list) {
         keys.swap(next_keys);
     }
 }
-
-}  // namespace
-
-void sort_events_added_in_triangle_order(std::vector<SplitEvent>& axis_events) { radix_sort(axis_events); }
 
 std::vector<std::uint32_t> triangles_of(const NodeEvents& events) {
     std::vector<std::uint32_t> triangles;

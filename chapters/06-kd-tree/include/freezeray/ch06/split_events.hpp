@@ -43,10 +43,11 @@ void add_triangle_events(NodeEvents& events, std::uint32_t triangle, const Bound
 // Sorts each axis's list.
 void sort_events(NodeEvents& events);
 
-// The same order, for one axis's list of events added in increasing triangle order, as the build adds the root's:
-// a stable radix sort on position and type (Knuth, The Art of Computer Programming, vol. 3,
-// section 5.2.5), which leaves events of equal position and type in triangle order. Linear in
-// the events: the root's million events of Crytek Sponza sort in a sixth of sort_events's time.
+// The same order, for one axis's list of events added in increasing triangle order, as the
+// build adds the root's: a stable radix sort on position and type (Knuth, The Art of Computer
+// Programming, vol. 3, section 5.2.5), which leaves events of equal position and type in
+// triangle order. Linear in the events: the root's million events of Crytek Sponza sort in a
+// sixth of sort_events's time.
 void sort_events_added_in_triangle_order(std::vector<SplitEvent>& axis_events);
 
 // The triangles of a node, in increasing order (each triangle's one Start or Planar event on x).
