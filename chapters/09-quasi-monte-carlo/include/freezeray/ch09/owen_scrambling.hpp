@@ -9,17 +9,29 @@
 
 namespace freezeray::ch09 {
 
-// A permutation of 32-bit words in which bit k of the result depends only on bits 0 to k of x
-// (and on the seed): additions and multiplications by even constants carry only upwards. Burley's
-// constants (2020, listing 3).
-// Inline, like the scramble below: a sampler calls them several times per draw.
+// A hash of 32-bit words, keyed by the seed, that is Owen's nested scramble of the word read
+// from bit 0 up (nested_uniform_scramble applies it to reversed bits). The contract:
+// - bit k of the result depends only on bits 0 to k of x (and on the seed): two words that agree
+//   in their low k + 1 bits have images that agree in them too;
+// - for every seed it is a bijection, and so a bijection of the low k bits for every k: the
+//   2^k words below 2^k have 2^k different low k bits;
+// - bit k is x's bit k flipped or not by a coin that the seed and bits 0 to k - 1 toss: for two
+//   words that first differ at bit j, each higher bit k of their images differs for about half of
+//   the seeds (Owen's coins are fair and independent; this family of hashes comes close, roughly
+//   30 to 75 percent for every j < k, where a sum or a product alone stays near 0 or 1);
+// - different seeds give different permutations.
+// Laine and Karras (2011) build it from operations that carry only upwards (additions, and
+// multiplications by even constants XORed in); Burley (2020) gives constants that make it
+// good. Inline, like the scramble below: a sampler calls it several times per draw.
 inline std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed) {
+    // EXERCISE(ch09/owen-hash): the hash of book chapter 09, "Why scrambling", that makes Owen's nested scramble practical, as laine_karras_permutation's comment states its contract (bits carried only upwards, a bijection, coins tossed by the seed and the lower bits); see Laine and Karras 2011 and Burley 2020
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
     return x;
+    // END EXERCISE
 }
 
 // Owen's nested uniform scramble of a 0.32 fraction: each bit is flipped or not according to a
