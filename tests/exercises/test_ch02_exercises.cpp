@@ -7,6 +7,7 @@
 #include "freezeray/ch02/microfacet.hpp"
 
 #include "chi_square.hpp"
+#include "reference_blocks.hpp"
 #include "statistics.hpp"
 
 #include <catch2/catch.hpp>
@@ -103,4 +104,15 @@ TEST_CASE("ch02/ggx-visible-normals", "[exercise]") {
             },
             [&](const Vec3& wm) { return static_cast<double>(c.distribution.pdf(c.w, wm)); }, options));
     }
+}
+
+TEST_CASE("ch02/importance-sampled-path-tracer", "[exercise]") {
+    // The assignment (tests/grading/assignments.json): this chapter's exercises together render
+    // the material spheres (rough plastic, rough glass, rough gold, a mirror) with pt-is as the solution does. 8 independent renders of 16 samples per pixel, each
+    // block of pixels against the solution's reference (make_references.py --blocks, other seeds),
+    // false-failure rate exercise_test_alpha for the whole comparison (reference_blocks.hpp).
+    const testing::ReferenceComparison comparison =
+        testing::compare_with_reference("ch02/importance-sampled-path-tracer", 8, 16, 1, stats::exercise_test_alpha);
+    INFO(comparison.message);
+    CHECK(comparison.passed);
 }

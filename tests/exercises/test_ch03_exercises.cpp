@@ -8,6 +8,7 @@
 
 #include "bias_detectors.hpp"
 #include "light_chi_square.hpp"
+#include "reference_blocks.hpp"
 #include "statistics.hpp"
 
 #include <catch2/catch.hpp>
@@ -137,4 +138,15 @@ TEST_CASE("ch03/area-to-solid-angle", "[exercise]") {
     const double cos_light = -to_light.z / glm::length(to_light);  // at the light, whose normal is +z
     CHECK(s->pdf == Approx(glm::dot(to_light, to_light) / (2.0 * cos_light)).epsilon(1e-5));
     check_light_sampling(light, reference, 10);
+}
+
+TEST_CASE("ch03/multiple-importance-sampling", "[exercise]") {
+    // The assignment (tests/grading/assignments.json): this chapter's exercises together render
+    // the material spheres with pt-mis, lit by their area light and by an environment map as the solution does. 8 independent renders of 16 samples per pixel, each
+    // block of pixels against the solution's reference (make_references.py --blocks, other seeds),
+    // false-failure rate exercise_test_alpha for the whole comparison (reference_blocks.hpp).
+    const testing::ReferenceComparison comparison =
+        testing::compare_with_reference("ch03/multiple-importance-sampling", 8, 16, 1, stats::exercise_test_alpha);
+    INFO(comparison.message);
+    CHECK(comparison.passed);
 }

@@ -6,6 +6,8 @@
 #include "freezeray/ch04/light_tracer.hpp"
 
 #include "full_paths.hpp"
+#include "reference_blocks.hpp"
+#include "statistics.hpp"
 #include "test_scenes.hpp"
 
 #include <catch2/catch.hpp>
@@ -88,4 +90,15 @@ TEST_CASE("ch04/camera-connection", "[exercise]") {
     }
     CHECK(connection->raster_position.x == Approx(film.x).margin(1e-2));
     CHECK(connection->raster_position.y == Approx(film.y).margin(1e-2));
+}
+
+TEST_CASE("ch04/bidirectional-path-tracer", "[exercise]") {
+    // The assignment (tests/grading/assignments.json): this chapter's exercises together render
+    // the Cornell box with bdpt as the solution does. 8 independent renders of 16 samples per pixel, each
+    // block of pixels against the solution's reference (make_references.py --blocks, other seeds),
+    // false-failure rate exercise_test_alpha for the whole comparison (reference_blocks.hpp).
+    const testing::ReferenceComparison comparison =
+        testing::compare_with_reference("ch04/bidirectional-path-tracer", 8, 16, 1, stats::exercise_test_alpha);
+    INFO(comparison.message);
+    CHECK(comparison.passed);
 }

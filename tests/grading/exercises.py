@@ -36,6 +36,7 @@ CPP_SUFFIXES = {".cpp", ".cc", ".cxx", ".hpp", ".hh", ".h", ".hxx", ".inl", ".ip
 TESTS_FOLDER = Path("tests") / "exercises"
 POINTS_FILE = Path("tests") / "grading" / "points.json"
 PREREQUISITES_FILE = Path("tests") / "grading" / "prerequisites.json"
+ASSIGNMENTS_FILE = Path("tests") / "grading" / "assignments.json"
 
 # The stub that replaces a region; it compiles in any function whatever its return type.
 STUB_TEMPLATE = 'throw ::freezeray::ExerciseNotImplemented("{name}");'
@@ -265,11 +266,111 @@ def load_prerequisites(path: Path) -> dict[str, list[str]]:
     return {name: list(before) for name, before in table.items()}
 
 
+@dataclass(frozen=True)
+class Assignment:
+    """A larger piece of work (assignments.json): one region that is a whole feature, or
+    several regions (its parts) that together make one, graded by a test of its own named after
+    it. `render_reference` says what its grading test renders (the views compared with the
+    solution's, make_references.py --blocks); `render` what grade.py --report shows."""
+
+    name: str
+    title: str
+    parts: tuple[str, ...]
+    book: str
+    render: dict
+    render_reference: dict
+
+    @property
+    def chapter(self) -> str:
+        return self.name.split("/", 1)[0]
+
+    @property
+    def is_composite(self) -> bool:
+        """True when it is made of other regions and has a grading test of its own."""
+        return self.parts != (self.name,)
+
+
+def load_assignments(path: Path) -> dict[str, Assignment]:
+    """tests/grading/assignments.json: the assignments by name (empty when absent)."""
+    if not path.is_file():
+        return {}
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except json.JSONDecodeError as error:
+        raise ValueError(f"{path}:{error.lineno}: not valid JSON: {error.msg}") from error
+    table = data.get("assignments", {})
+    if not isinstance(table, dict):
+        raise ValueError(f"{path}: 'assignments' must map names to objects")
+    assignments = {}
+    for name, entry in table.items():
+        where = f"{path}: assignments.{name}"
+        if not isinstance(entry, dict) or not isinstance(entry.get("parts"), list) or not entry["parts"]:
+            raise ValueError(f"{where}: expected an object with a non-empty list 'parts'")
+        if not isinstance(entry.get("title", ""), str) or not isinstance(entry.get("report", {}), dict) \
+                or not isinstance(entry.get("reference", {}), dict):
+            raise ValueError(f"{where}: 'title' must be a string, 'report' and 'reference' objects")
+        assignments[name] = Assignment(name, entry.get("title", name), tuple(entry["parts"]),
+                                       entry.get("book", ""), entry.get("report", {}), entry.get("reference", {}))
+    return assignments
+
+
+def all_prerequisites(root: Path) -> dict[str, list[str]]:
+    """prerequisites.json, with each composite assignment's parts added to its own list."""
+    before = load_prerequisites(root / PREREQUISITES_FILE)
+    for assignment in load_assignments(root / ASSIGNMENTS_FILE).values():
+        if assignment.is_composite:
+            listed = before.setdefault(assignment.name, [])
+            listed += [part for part in assignment.parts if part not in listed]
+    return before
+
+
+def check_assignments(root: Path, names: set[str], tests: dict[str, str]) -> list[str]:
+    """assignments.json names real exercises; a composite one has a test and no region."""
+    problems = []
+    try:
+        assignments = load_assignments(root / ASSIGNMENTS_FILE)
+    except ValueError as error:
+        return [str(error)]
+    where = ASSIGNMENTS_FILE.as_posix()
+    for assignment in assignments.values():
+        if not NAME.match(assignment.name):
+            problems.append(f"{where}: {assignment.name!r} is not a name like ch01/kebab-name")
+            continue
+        if assignment.is_composite:
+            if assignment.name in names:
+                problems.append(f"{where}: {assignment.name} is both an exercise region and an assignment "
+                                "made of other regions")
+            if len(assignment.parts) < 2:
+                problems.append(f"{where}: {assignment.name} names one part: make the region itself the assignment")
+            if (root / TESTS_FOLDER).is_dir() and assignment.name not in tests:
+                problems.append(f"{where}: assignment {assignment.name} has no grading test: add "
+                                f'TEST_CASE("{assignment.name}", "[exercise]") to {TESTS_FOLDER.as_posix()}/')
+        elif assignment.name not in names:
+            problems.append(f"{where}: {assignment.name} is neither an exercise region nor made of parts")
+        for part in assignment.parts if assignment.is_composite else ():
+            if part not in names:
+                problems.append(f"{where}: {assignment.name}'s part {part} is not an exercise")
+            elif part.split("/", 1)[0] != assignment.chapter:
+                problems.append(f"{where}: {assignment.name}'s part {part} belongs to another chapter")
+    return problems
+
+
+def graded_names(root: Path, regions: list[Region]) -> list[str]:
+    """What the grading tests grade: every exercise region and every composite assignment."""
+    composites = [a.name for a in load_assignments(root / ASSIGNMENTS_FILE).values() if a.is_composite]
+    return sorted({region.name for region in regions} | set(composites))
+
+
 def check_tree(root: Path) -> list[str]:
-    """Every problem with the markers, the grading tests' names and points.json."""
+    """Every problem with the markers, the grading tests' names, points.json and assignments.json."""
     regions, problems = find_regions_with_problems(root)
-    names = {region.name for region in regions}
+    region_names = {region.name for region in regions}
     tests = find_grading_tests(root)
+    problems += check_assignments(root, region_names, tests)
+    try:
+        names = set(graded_names(root, regions))
+    except ValueError:
+        names = set(region_names)
     if (root / TESTS_FOLDER).is_dir():
         for region in regions:
             if region.name not in tests:
@@ -278,7 +379,8 @@ def check_tree(root: Path) -> list[str]:
         for name, location in tests.items():
             if name not in names:
                 problems.append(f"{location}: grading test \"{name}\" names no exercise region "
-                                f"(expected `// EXERCISE({name}): ...` under chapters/)")
+                                f"(expected `// EXERCISE({name}): ...` under chapters/, or an assignment "
+                                f"made of regions in {ASSIGNMENTS_FILE.as_posix()})")
     try:
         _, points = load_points(root / POINTS_FILE)
     except ValueError as error:

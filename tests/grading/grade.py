@@ -415,7 +415,11 @@ def grade_build(args: argparse.Namespace, build_dir: Path, source: Path | None, 
     default_points, points = exercises.load_points(points_file)
     region_names = []
     if source is not None and source.is_dir():
-        region_names = [region.name for region in exercises.find_regions_with_problems(source)[0]]
+        regions = exercises.find_regions_with_problems(source)[0]
+        try:
+            region_names = exercises.graded_names(source, regions)  # and the assignments made of regions
+        except ValueError:
+            region_names = [region.name for region in regions]
     report = Report([], student, now(), source_hash, notes)
     if args.no_build:
         check_fresh(build_dir, source)
@@ -454,28 +458,40 @@ def grade_submission(args: argparse.Namespace, folder: Path, student: str) -> Re
 
 def format_exercise_list(root: Path, chapter: str | None, only: str | None) -> str:
     """The exercises in the order to do them (chapter by chapter, each after its prerequisites),
-    with points, prerequisites, where and what."""
+    with points, prerequisites, where and what; an assignment made of several exercises comes
+    after its parts, and every assignment says what it makes."""
     regions = exercises.select_regions(exercises.find_regions(root), only=only, chapter=chapter)
+    assignments = exercises.load_assignments(root / exercises.ASSIGNMENTS_FILE)
     default_points, points = exercises.load_points(root / POINTS)
-    before = exercises.load_prerequisites(root / exercises.PREREQUISITES_FILE)
-    by_name = {region.name: region for region in regions}
-    ordered: list[exercises.Region] = []
+    before = exercises.all_prerequisites(root)
+    by_name: dict[str, exercises.Region | None] = {region.name: region for region in regions}
+    for assignment in assignments.values():
+        wanted = only == assignment.name or (only is None and chapter in (None, assignment.chapter))
+        if assignment.is_composite and wanted:
+            by_name[assignment.name] = None
+    ordered: list[str] = []
 
     def place(name: str, seen: tuple[str, ...] = ()) -> None:  # after its prerequisites
-        if name not in by_name or by_name[name] in ordered or name in seen:
+        if name not in by_name or name in ordered or name in seen:
             return
         for first in sorted(before.get(name, [])):
             place(first, seen + (name,))
-        ordered.append(by_name[name])
+        ordered.append(name)
 
     for name in sorted(by_name):
         place(name)
     lines = []
-    for region in ordered:
-        worth = points.get(region.name, default_points)
-        needs = f"  (first: {', '.join(before[region.name])})" if before.get(region.name) else ""
-        lines.append(f"{region.name}  [{worth} point{'s' if worth != 1 else ''}]{needs}")
-        lines.append(f"    {region.location}: {region.description}")
+    for name in ordered:
+        worth = points.get(name, default_points)
+        needs = f"  (first: {', '.join(before[name])})" if before.get(name) else ""
+        lines.append(f"{name}  [{worth} point{'s' if worth != 1 else ''}]{needs}")
+        region = by_name[name]
+        if region is not None:
+            lines.append(f"    {region.location}: {region.description}")
+        if name in assignments:
+            kind = "made of the exercises above" if region is None else "a whole feature in one region"
+            book = f" ({assignments[name].book})" if assignments[name].book else ""
+            lines.append(f"    assignment, {kind}: {assignments[name].title}{book}")
     return "\n".join(lines)
 
 

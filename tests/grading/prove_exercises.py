@@ -63,6 +63,7 @@ class Proof:
     name: str
     has_region: bool
     has_test: bool
+    parts: tuple[str, ...] = ()  # an assignment made of these regions (assignments.json)
     solution: Run | None = None
     stubbed: Run | None = None
     isolated: Run | None = None
@@ -78,6 +79,8 @@ class Proof:
         where = " alone" if self.isolated else ""
         if self.name in run.stubs:
             return f"FAIL (its stub{where})"
+        if self.parts and any(part in run.stubs for part in self.parts):
+            return f"FAIL (its part {next(p for p in run.stubs if p in self.parts)})"
         if self.isolated is not None:
             return "FAIL (stubbed alone)"
         if run.stubs:
@@ -279,13 +282,20 @@ def check_plants(plants: list[Plant], regions: list[exercises.Region], source: P
 
 # --- The proof --------------------------------------------------------------------------------
 
-def match_tests_to_regions(regions: list[exercises.Region], tests: list[str]) -> dict[str, Proof]:
-    """Step 1: one Proof per exercise or test; a region without test or test without region is a violation."""
+def match_tests_to_regions(regions: list[exercises.Region], tests: list[str],
+                           composites: dict[str, tuple[str, ...]] | None = None) -> dict[str, Proof]:
+    """Step 1: one Proof per exercise or test; a region without test or test without region is a
+    violation. An assignment made of regions (`composites`: its parts) has its regions in them."""
     proofs: dict[str, Proof] = {}
+    composites = composites or {}
     region_at = {region.name: region for region in regions}
-    for name in sorted(set(region_at) | set(tests)):
-        proof = Proof(name, has_region=name in region_at, has_test=name in tests)
-        if not proof.has_test:
+    for name in sorted(set(region_at) | set(tests) | set(composites)):
+        proof = Proof(name, has_region=name in region_at or name in composites, has_test=name in tests,
+                      parts=composites.get(name, ()))
+        if not proof.has_test and proof.parts:
+            proof.violations.append(f"assignment {name} has no grading test "
+                                    f'(TEST_CASE("{name}", "[exercise]") in tests/exercises/)')
+        elif not proof.has_test:
             proof.violations.append(f"{region_at[name].location}: exercise {name} has no grading test "
                                     f'(TEST_CASE("{name}", "[exercise]") in tests/exercises/)')
         if not proof.has_region:
@@ -315,6 +325,10 @@ def check_stubbed(proofs: dict[str, Proof], executable: Path, build_dir: Path, t
         proof.stubbed = run_test(executable, proof.name, build_dir, timeout)
         if proof.stubbed.passed:
             proof.violations.append(f"{proof.name}: passes on the stub, so the test does not check the exercise")
+        elif proof.parts:  # an assignment made of regions: it must reach one of its parts' stubs
+            if not any(part in proof.stubbed.stubs for part in proof.parts):
+                proof.violations.append(f"{proof.name}: fails on the student copy without reaching the stub of any "
+                                        f"of its parts ({', '.join(proof.parts)})")
         elif proof.name not in proof.stubbed.stubs:
             to_isolate.append(proof.name)
     return to_isolate
@@ -389,7 +403,9 @@ def prove(args: argparse.Namespace) -> int:
     executable = Path(executable).resolve()
 
     print_step(f"{len(regions)} exercise region(s) in {source}; tests from {executable}")
-    proofs = match_tests_to_regions(regions, list_tests(executable, build_dir))
+    composites = {a.name: a.parts for a in exercises.load_assignments(source / exercises.ASSIGNMENTS_FILE).values()
+                  if a.is_composite}
+    proofs = match_tests_to_regions(regions, list_tests(executable, build_dir), composites)
     print_step("running the grading tests on the solution")
     check_solution(proofs, executable, build_dir, args.test_timeout)
 
@@ -411,7 +427,7 @@ def prove(args: argparse.Namespace) -> int:
                 isolate(proofs, to_isolate, source, work, build_dir, executable, args.jobs, args.test_timeout)
             else:
                 report_unisolated(proofs, to_isolate)
-            problems += check_prerequisites(proofs, exercises.load_prerequisites(source / exercises.PREREQUISITES_FILE))
+            problems += check_prerequisites(proofs, exercises.all_prerequisites(source))
             problems += check_plants(load_plants(), regions, source, work, build_dir, executable, args.jobs,
                                      args.test_timeout)
         except RuntimeError as error:

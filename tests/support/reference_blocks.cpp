@@ -1,0 +1,124 @@
+// Comparing an assignment's renders with the solution's, block by block (reference_blocks.hpp).
+#include "reference_blocks.hpp"
+
+#include "statistics.hpp"
+#include "test_scenes.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <vector>
+
+namespace freezeray::testing {
+
+namespace {
+
+// The mean of each block of pixels, per channel: blocks in row order from the top left.
+std::vector<Spectrum> block_means(const Image& image, int blocks_x, int blocks_y) {
+    const int w = image.width() / blocks_x, h = image.height() / blocks_y;
+    std::vector<Spectrum> means;
+    for (int j = 0; j < blocks_y; ++j)
+        for (int i = 0; i < blocks_x; ++i) {
+            double sum[3] = {0.0, 0.0, 0.0};
+            for (int y = j * h; y < (j + 1) * h; ++y)
+                for (int x = i * w; x < (i + 1) * w; ++x)
+                    for (int c = 0; c < 3; ++c) sum[c] += image.at(x, y)[c];
+            const double n = static_cast<double>(w) * h;
+            means.emplace_back(static_cast<float>(sum[0] / n), static_cast<float>(sum[1] / n),
+                               static_cast<float>(sum[2] / n));
+        }
+    return means;
+}
+
+std::string reference_path(const std::string& assignment) {
+    std::string file = assignment;
+    for (char& c : file)
+        if (c == '/') c = '-';
+    return test_data_path("references/" + file + ".json");
+}
+
+}  // namespace
+
+ReferenceComparison compare_with_reference(const std::string& assignment, int batches, std::uint64_t spp_per_batch,
+                                           std::uint64_t first_seed, double alpha) {
+    const std::string path = reference_path(assignment);
+    std::ifstream file(path);
+    if (!file) return {false, path + " is missing: make it with tests/grading/make_references.py --blocks"};
+    const nlohmann::json reference = nlohmann::json::parse(file);
+    const std::uint64_t reference_seed = reference.at("seed").get<std::uint64_t>();
+    const std::uint64_t reference_batches = reference.at("batches").get<std::uint64_t>();
+    if (first_seed < reference_seed + reference_batches && reference_seed < first_seed + batches)
+        return {false, "the test's seeds overlap the reference's: they must be independent"};
+
+    std::size_t tests = 0;
+    for (const auto& view : reference.at("views")) tests += 3 * view.at("mean").size();
+    const double alpha_each = stats::sidak_alpha(alpha, tests);
+
+    ReferenceComparison result{true, ""};
+    double worst_p = 2.0;
+    std::size_t failing = 0;
+    int view_number = 0;
+    for (const auto& view : reference.at("views")) {
+        ++view_number;
+        const int blocks_x = view.at("blocks")[0].get<int>(), blocks_y = view.at("blocks")[1].get<int>();
+        TestRender request;
+        request.scene = std::string(FREEZERAY_SOURCE_DIR) + "/" + view.at("scene").get<std::string>();
+        request.integrator = view.at("integrator").get<std::string>();
+        request.width = view.at("width").get<int>();
+        request.height = view.at("height").get<int>();
+        request.max_depth = view.at("max_depth").get<int>();
+        request.samples_per_pixel = spp_per_batch;
+        request.accelerator = "bruteforce";  // chapters 01 to 05's own (the KD-tree is chapter 06's exercise)
+        std::vector<std::vector<Spectrum>> per_batch;
+        std::uint64_t invalid = 0;
+        for (int b = 0; b < batches; ++b) {
+            request.seed = first_seed + static_cast<std::uint64_t>(b);
+            const RenderResult rendered = render(request);
+            invalid += rendered.invalid_samples;
+            per_batch.push_back(block_means(rendered.image, blocks_x, blocks_y));
+        }
+        const std::string where = "view " + std::to_string(view_number) + " (" + view.at("scene").get<std::string>() +
+                                  ", " + request.integrator + ")";
+        if (invalid != 0) {
+            result.passed = false;
+            result.message = where + ": " + std::to_string(invalid) + " samples were NaN, Inf or negative";
+            return result;
+        }
+        const auto& means = view.at("mean");
+        const auto& errors = view.at("standard_error");
+        for (std::size_t block = 0; block < means.size(); ++block)
+            for (int c = 0; c < 3; ++c) {
+                std::vector<double> values;
+                for (const auto& batch : per_batch) values.push_back(batch[block][c]);
+                const stats::MeanEstimate mine = stats::estimate_mean(values);
+                const double error = errors[block][c].get<double>();
+                const stats::MeanEstimate solution{means[block][c].get<double>(), error * error,
+                                                   static_cast<double>(reference_batches - 1)};
+                const double p = stats::welch_p_value(mine, solution);
+                if (p > alpha_each) continue;
+                ++failing;
+                if (p >= worst_p) continue;
+                worst_p = p;
+                char text[320];
+                std::snprintf(text, sizeof text,
+                              "block (%d, %d) of %dx%d, channel %c: %.4g against the solution's %.4g +- %.2g (p = %.2g)",
+                              static_cast<int>(block) % blocks_x, static_cast<int>(block) / blocks_x, blocks_x,
+                              blocks_y, "rgb"[c], mine.mean, solution.mean, error, p);
+                result.message = where + ": " + text;
+            }
+    }
+    if (failing != 0) {
+        result.passed = false;
+        result.message = "the render differs from the solution's in " + std::to_string(failing) + " of " +
+                         std::to_string(tests) + " blocks and channels; the worst: " + result.message;
+    } else {
+        char text[200];
+        std::snprintf(text, sizeof text, "%zu blocks and channels match the solution's (each at false-failure rate %.2g)",
+                      tests, alpha_each);
+        result.message = text;
+    }
+    return result;
+}
+
+}  // namespace freezeray::testing
