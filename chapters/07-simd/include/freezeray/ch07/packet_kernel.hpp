@@ -51,8 +51,19 @@ Mask inside_lanes(const Lanes& u, const Lanes& v, const Lanes& w) {
 
 // BOOK(intersect-packet)
 // Tests the ray against the packet's W triangles; see PacketHits for what is written.
+// The contract, lane by lane, for each lane whose bit is set in valid_lanes (the others are
+// padding: in neither mask, whatever their coordinates):
+// - edge_lanes: the lanes where one of the three edge functions, computed in single precision as
+//   intersect_triangle computes them (same operations, same order), is exactly zero;
+// - hit_lanes: the other lanes whose triangle intersect_triangle would hit in (0, tmax), with
+//   t, b0, b1 and b2 in those lanes of `hits` equal to its answer to the bit; no lane in both.
+// The entries of t and the barycentrics in other lanes may be overwritten. To be bit-identical,
+// every lane performs intersect_triangle's IEEE operations in its order: the same shear of the
+// vertices relative to the origin, the sign test (inside_lanes), the scaled distance against
+// the interval before dividing, a true division, and the conservative rejection of t near 0.
 template <typename Lanes>
 void intersect_packet(const PacketRay& ray, const float* coordinates, std::uint32_t valid_lanes, PacketHits& hits) {
+    // EXERCISE(ch07/packet-kernel): the watertight test of book chapter 07, "The watertight test, W at a time", on W lanes at once, as intersect_packet's comment in packet_kernel.hpp states its contract: every valid lane answers as intersect_triangle does, to the bit, lanes on an edge handed back, padding never reported
     using Mask = typename Lanes::Mask;
     constexpr int W = Lanes::width;
     // Vertex `vertex`'s coordinate on `axis`, relative to the ray's origin, in W lanes.
@@ -123,6 +134,7 @@ void intersect_packet(const PacketRay& ray, const float* coordinates, std::uint3
     (u * inverse_det).store(hits.b0);
     (v * inverse_det).store(hits.b1);
     (w * inverse_det).store(hits.b2);
+    // END EXERCISE
 }
 // END BOOK
 

@@ -22,7 +22,8 @@ struct PacketRay {
 
 // The answer for one packet of W triangles. Bit i of a mask is lane i.
 //  - hit_lanes: lanes whose triangle the ray hits in (0, tmax); t and the barycentric
-//    coordinates of those lanes are written (the others' entries are left as they were).
+//    coordinates of those lanes are written (the others' entries may be overwritten too: read
+//    only the hit lanes').
 //  - edge_lanes: lanes where a single-precision edge function is exactly zero; the scalar test
 //    recomputes those in double precision (triangle_intersection.hpp) and decides them.
 // A lane is in at most one of the two masks; padded lanes are in neither.
