@@ -6,40 +6,35 @@
 
 namespace freezeray::ch08 {
 
-namespace {
-
-// For each of the n' texels of the next level, along one axis: the texels below it and their
-// weights (the length of [i, i + 1) inside the texel's interval, divided by its length n / n').
-struct Taps {
-    int first = 0;
-    int count = 0;
-    double weight[3] = {0.0, 0.0, 0.0};
-};
-
-std::vector<Taps> box_taps(int n) {
-    const int next = std::max(1, n / 2);
-    std::vector<Taps> taps(static_cast<std::size_t>(next));
-    for (int i = 0; i < next; ++i) {
-        // The interval [a, b) in texels below, with exact integer arithmetic: a = i n / n'.
-        const double a = static_cast<double>(i) * n / next;
-        const double b = static_cast<double>(i + 1) * n / next;
-        Taps& t = taps[static_cast<std::size_t>(i)];
-        t.first = static_cast<int>(std::floor(a));
-        const int last = std::min(n - 1, static_cast<int>(std::ceil(b)) - 1);
-        t.count = last - t.first + 1;
-        for (int k = 0; k < t.count; ++k) {
-            const double lo = std::max(a, static_cast<double>(t.first + k));
-            const double hi = std::min(b, static_cast<double>(t.first + k + 1));
-            t.weight[k] = (hi - lo) / (b - a);
-        }
-    }
-    return taps;
-}
-
-}  // namespace
-
 // BOOK(next-mip-level)
 Image next_mip_level(const Image& level) {
+    // EXERCISE(ch08/mip-pyramid): the next level of the pyramid of book chapter 08, "MIP maps, because locality needs them", as next_mip_level's comment in mip_map.hpp states it: its size, and every texel the exact average of the part of the level below it covers, for any size, even or odd
+    // For each of the n' texels of the next level, along one axis: the texels below it and their
+    // weights (the length of [i, i + 1) inside the texel's interval, divided by its length n / n').
+    struct Taps {
+        int first = 0;
+        int count = 0;
+        double weight[3] = {0.0, 0.0, 0.0};
+    };
+    auto box_taps = [](int n) {
+        const int next = std::max(1, n / 2);
+        std::vector<Taps> taps(static_cast<std::size_t>(next));
+        for (int i = 0; i < next; ++i) {
+            // The interval [a, b) in texels below: a = i n / n', b = (i + 1) n / n'.
+            const double a = static_cast<double>(i) * n / next;
+            const double b = static_cast<double>(i + 1) * n / next;
+            Taps& t = taps[static_cast<std::size_t>(i)];
+            t.first = static_cast<int>(std::floor(a));
+            const int last = std::min(n - 1, static_cast<int>(std::ceil(b)) - 1);
+            t.count = last - t.first + 1;
+            for (int k = 0; k < t.count; ++k) {
+                const double lo = std::max(a, static_cast<double>(t.first + k));
+                const double hi = std::min(b, static_cast<double>(t.first + k + 1));
+                t.weight[k] = (hi - lo) / (b - a);
+            }
+        }
+        return taps;
+    };
     const std::vector<Taps> across = box_taps(level.width());
     const std::vector<Taps> down = box_taps(level.height());
     Image next(static_cast<int>(across.size()), static_cast<int>(down.size()));
@@ -65,6 +60,7 @@ Image next_mip_level(const Image& level) {
             next.at(x, y) = Spectrum(sum);
         }
     return next;
+    // END EXERCISE
 }
 // END BOOK
 

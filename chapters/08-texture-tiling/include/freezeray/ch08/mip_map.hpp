@@ -17,7 +17,11 @@ namespace freezeray::ch08 {
 // covers [i n / n', (i + 1) n / n') of the n texels below: exactly two when n is even, and
 // parts of three when n is odd, weighted by how much of each it covers, so that any size, not
 // only powers of two, keeps its mean (the weights are those of NVIDIA's "Non-Power-of-Two
-// Mipmap Creation", 2005, and of any exact area average).
+// Mipmap Creation", 2005, and of any exact area average). Along each axis on its own: a texel of
+// the next level is the sum over the texels below of (the length of x's overlap with its
+// interval / the interval's length) x (the same for y) x the texel below; a side of 1 stays 1
+// (its one texel covers the whole side). The sums are made in double precision and rounded to
+// float once, so that a constant image stays that constant and the mean is kept to rounding.
 Image next_mip_level(const Image& level);
 
 // Calls `visit` with level 1, 2, ... of `image` down to the 1 x 1 level, in that order, each
