@@ -4,6 +4,9 @@
 // relies on. Deterministic: no statistical test in this file.
 #include "freezeray/ch05/metropolis.hpp"
 
+#include "reference_blocks.hpp"
+#include "statistics.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -43,4 +46,16 @@ TEST_CASE("ch05/small-step", "[exercise]") {
         const float y = small_step(x, 1.3f, 0.2f, 2);
         CHECK(small_step(y, -1.3f, 0.2f, 2) == Approx(x).margin(1e-5));
     }
+}
+
+TEST_CASE("ch05/metropolis-light-transport", "[exercise]") {
+    // The assignment (tests/grading/assignments.json): this chapter's exercises together render
+    // the Cornell box with mlt as the solution does. 8 independent renders (each its own chains and
+    // bootstrap) of 16 samples per pixel, each block of pixels against the solution's reference
+    // (make_references.py --blocks, other seeds), false-failure rate exercise_test_alpha for the
+    // whole comparison (reference_blocks.hpp).
+    const freezeray::testing::ReferenceComparison comparison = freezeray::testing::compare_with_reference(
+        "ch05/metropolis-light-transport", 8, 16, 1, freezeray::stats::exercise_test_alpha);
+    INFO(comparison.message);
+    CHECK(comparison.passed);
 }

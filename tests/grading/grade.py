@@ -27,6 +27,11 @@ submission that edits a test or points.json gains nothing. --batch grades every 
 SUBMISSIONS in turn in the same WORK folder (the build reused: only files whose regions differ
 recompile), its name the student id, into one CSV.
 
+Assignment reports: --report DIR renders, for each assignment (assignments.json), its scene with
+the graded code and writes a page with the student's image beside the solution's reference (a
+slider), the error image and the two relMSEs (assignment_report.py); the references come from
+make_references.py --images on the solution's tree (--references DIR).
+
 Gradebook output: --json FILE and --csv FILE hold the student id (--student), the time, the
 hash of the graded regions, per exercise its points, earned, result and reason, and per chapter
 the subtotals.
@@ -53,7 +58,8 @@ from pathlib import Path
 
 sys.dont_write_bytecode = True  # keep __pycache__ out of the source tree
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import exercises  # noqa: E402  (the shared modules beside this script)
+import assignment_report  # noqa: E402  (the shared modules beside this script)
+import exercises  # noqa: E402
 import submission  # noqa: E402
 
 # ctest names a grading test "exercise: ch01/name" (Catch2 v2's catch_discover_tests may
@@ -435,6 +441,15 @@ def grade_build(args: argparse.Namespace, build_dir: Path, source: Path | None, 
     say(args, "running the grading tests ...")
     outcomes = run_grading_tests(build_dir, args.chapter, args.verbose, args.jobs, args.only)
     report.rows = build_rows(outcomes, region_names, default_points, points, args.chapter, args.only)
+    if args.report is not None and source is not None:
+        folder = args.report / student if args.batch is not None else args.report
+        say(args, f"rendering the assignments' reports into {folder} ...")
+        grades = {row.exercise: f"{row.earned}/{row.points} {row.result}" + (f": {row.reason}" if row.reason else "")
+                  for row in report.rows}
+        references = args.references or build_dir / "assignment-references"
+        made = assignment_report.make_reports(build_dir, source, references, folder, grades, args.chapter, args.only,
+                                              student, args.jobs_build)
+        report.notes.append(f"assignment reports ({len(made)}): {folder / 'index.html'}")
     return report
 
 
@@ -524,6 +539,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--csv", type=Path, metavar="FILE", help="also write the report as CSV to FILE")
     parser.add_argument("--teacher-tests", type=Path, metavar="TEACHER",
                         help="teacher mode: the teacher's FreezeRay tree, whose tests and points.json grade")
+    parser.add_argument("--report", type=Path, metavar="DIR",
+                        help="also render each assignment's scene with the graded code and write pages comparing it "
+                             "with the solution's reference to DIR (a folder per student with --batch)")
+    parser.add_argument("--references", type=Path, metavar="DIR",
+                        help="the references made by make_references.py --images on the solution's tree "
+                             "(default: BUILD_DIR/assignment-references)")
     graded = parser.add_mutually_exclusive_group()
     graded.add_argument("--submission", type=Path, metavar="DIR", help="teacher mode: one submission's tree")
     graded.add_argument("--batch", type=Path, metavar="SUBMISSIONS",

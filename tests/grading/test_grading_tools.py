@@ -9,6 +9,7 @@ from __future__ import annotations
 import io
 import os
 import shutil
+import struct
 import subprocess
 import sys
 import tempfile
@@ -20,8 +21,10 @@ from pathlib import Path
 sys.dont_write_bytecode = True
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+import assignment_report  # noqa: E402
 import exercises  # noqa: E402
 import grade  # noqa: E402
+import make_references  # noqa: E402
 import make_student_copy  # noqa: E402
 import prove_exercises  # noqa: E402
 import submission  # noqa: E402
@@ -277,6 +280,110 @@ class CheckingTheTree(TreeTestCase):
         self.assertIn("chapters/01-naive/src/broken.cpp:1:", errors.getvalue())
 
 
+class Assignments(TreeTestCase):
+    """assignments.json: composite assignments (a test of their own, parts of their chapter) and
+    whole-feature regions."""
+
+    def write_assignments(self, table: str) -> None:
+        write_tree(self.root, {"tests/grading/assignments.json": '{"assignments": ' + table + '}'})
+
+    def test_a_composite_assignment_needs_its_test_and_real_parts(self):
+        self.write_assignments('{"ch01/tiny-renderer": {"title": "t", "parts": ["ch01/twice", "ch01/four-times"]}}')
+        problems = exercises.check_tree(self.root)
+        self.assertEqual(len(problems), 1, problems)
+        self.assertIn('assignment ch01/tiny-renderer has no grading test', problems[0])
+        write_tree(self.root, {"tests/exercises/more.cpp": 'TEST_CASE("ch01/tiny-renderer", "[exercise]") {}\n',
+                               "tests/grading/points.json": '{"points": {"ch01/tiny-renderer": 2}}'})
+        self.assertEqual(exercises.check_tree(self.root), [])
+        self.write_assignments('{"ch01/tiny-renderer": {"parts": ["ch01/twice", "ch02/mirror", "ch01/none"]}}')
+        problems = "\n".join(exercises.check_tree(self.root))
+        self.assertIn("part ch02/mirror belongs to another chapter", problems)
+        self.assertIn("part ch01/none is not an exercise", problems)
+
+    def test_a_region_assignment_must_be_a_region_and_a_composite_must_not(self):
+        self.write_assignments('{"ch02/mirror": {"parts": ["ch02/mirror"]}, "ch01/ghost": {"parts": ["ch01/ghost"]},'
+                               ' "ch01/twice": {"parts": ["ch01/twice", "ch01/four-times"]}}')
+        problems = "\n".join(exercises.check_tree(self.root))
+        self.assertIn("ch01/ghost is neither an exercise region nor made of parts", problems)
+        self.assertIn("ch01/twice is both an exercise region and an assignment made of other regions", problems)
+        self.assertNotIn("ch02/mirror", problems)
+
+    def test_malformed_assignments_are_reported(self):
+        self.write_assignments('{"ch01/x": {"parts": []}}')
+        self.assertTrue(any("non-empty list 'parts'" in p for p in exercises.check_tree(self.root)))
+
+    def test_the_list_puts_a_composite_after_its_parts(self):
+        self.write_assignments('{"ch01/tiny-renderer": {"title": "A tiny renderer", "parts": ["ch01/four-times", '
+                               '"ch01/twice"], "book": "book/01.md"}, "ch02/mirror": {"title": "Mirrors", '
+                               '"parts": ["ch02/mirror"]}}')
+        write_tree(self.root, {"tests/exercises/more.cpp": 'TEST_CASE("ch01/tiny-renderer", "[exercise]") {}\n'})
+        listing = grade.format_exercise_list(self.root, None, None)
+        names = [line.split()[0] for line in listing.splitlines() if not line.startswith(" ")]
+        self.assertEqual(names, ["ch01/four-times", "ch01/twice", "ch01/tiny-renderer", "ch02/mirror"])
+        self.assertIn("ch01/tiny-renderer  [1 point]  (first: ch01/four-times, ch01/twice)", listing)
+        self.assertIn("assignment, made of the exercises above: A tiny renderer (book/01.md)", listing)
+        self.assertIn("assignment, a whole feature in one region: Mirrors", listing)
+        self.assertNotIn("tiny-renderer", grade.format_exercise_list(self.root, "ch02", None))
+        self.assertEqual(exercises.all_prerequisites(self.root)["ch01/tiny-renderer"], ["ch01/four-times", "ch01/twice"])
+
+
+class References(unittest.TestCase):
+    def test_reads_a_pfm_top_row_first_and_averages_blocks(self):
+        with tempfile.TemporaryDirectory() as folder:
+            path = Path(folder) / "a.pfm"
+            # 2 x 2, little-endian (negative scale), bottom row first: bottom (1, 2), top (3, 4)
+            pixels = [1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4]
+            path.write_bytes(b"PF\n2 2\n-1.0\n" + b"".join(struct.pack("<f", v) for v in pixels))
+            width, height, read = make_references.read_pfm(path)
+        self.assertEqual((width, height), (2, 2))
+        self.assertEqual([p[0] for p in read], [3, 4, 1, 2])
+        self.assertEqual(make_references.block_means(2, 2, read, (2, 1)), [[2.0] * 3, [3.0] * 3])
+        self.assertEqual(make_references.block_means(2, 2, read, (1, 1)), [[2.5] * 3])
+        with self.assertRaises(RuntimeError):
+            make_references.block_means(2, 2, read, (3, 1))
+
+    def test_reference_file_names(self):
+        self.assertEqual(make_references.reference_file(Path("/r"), "ch01/naive-path-tracer"),
+                         Path("/r/tests/data/references/ch01-naive-path-tracer.json"))
+
+    def test_last_relative_mse_of_a_comparison(self):
+        with tempfile.TemporaryDirectory() as folder:
+            (Path(folder) / "convergence.csv").write_text(
+                "integrator,checkpoint,relative_mse\npt-naive,1,0.5\npt-naive,2,0.25\nbdpt,1,0.1\n")
+            self.assertEqual(make_references.last_relative_mse(Path(folder), "pt-naive"), 0.25)
+            with self.assertRaises(RuntimeError):
+                make_references.last_relative_mse(Path(folder), "mlt")
+
+
+class AssignmentReports(unittest.TestCase):
+    def test_verdicts(self):
+        self.assertIn("it looks as it should", assignment_report.verdict_of(0.02, 0.02, ""))
+        self.assertIn("3.0 times the solution's", assignment_report.verdict_of(0.06, 0.02, ""))
+        self.assertEqual(assignment_report.verdict_of(None, None, "the renderer stopped: x"),
+                         "No image: the renderer stopped: x")
+
+    def test_the_template_has_every_placeholder_filled(self):
+        values = {key: "X" for key in ("title", "name", "grade", "verdict", "reference", "mine", "error",
+                                       "has_images", "width", "height", "settings", "command", "book", "comparison")}
+        page = assignment_report.fill(assignment_report.TEMPLATE.read_text(encoding="utf-8"), values)
+        self.assertNotIn("{{", page)
+        self.assertIn('type="range"', page)  # the slider
+
+    def test_a_missing_reference_makes_a_page_that_says_how_to_make_it(self):
+        with tempfile.TemporaryDirectory() as folder:
+            root = Path(folder)
+            assignment = exercises.Assignment("ch01/tiny", "Tiny", ("ch01/a", "ch01/b"), "book/01.md",
+                                              {"scene": "s.json", "integrator": "pt-naive", "width": 8, "height": 8,
+                                               "spp": 4}, {})
+            made = assignment_report.make_one(assignment, root / "build", root, root / "refs", root / "report",
+                                              "0/2 FAIL (wrong result)", 1)
+            self.assertIn("make_references.py", made.verdict)
+            assignment_report.write_index(root / "report", [made], "alice")
+            self.assertIn("ch01/tiny", (root / "report" / "index.html").read_text())
+            self.assertIn("0/2 FAIL (wrong result)", (root / "report" / "report.md").read_text())
+            self.assertIn("hidden", (root / "report" / "ch01-tiny" / "index.html").read_text())
+
+
 class StudentCopy(TreeTestCase):
     def test_every_region_is_stubbed_and_markers_kept(self):
         copy = self.copy()
@@ -521,6 +628,20 @@ class ProofParts(unittest.TestCase):
         self.assertEqual(len(violations), 1)
         self.assertIn("ch01/b: its test runs ch01/a first", violations[0])
         self.assertEqual(prove_exercises.check_prerequisites(proofs, {"ch01/b": ["ch01/a"]}), [])
+
+    def test_a_composite_assignment_is_proven_through_its_parts_stubs(self):
+        folder = Path(self.folder.name)
+        proofs = prove_exercises.match_tests_to_regions([self.region("ch01/a")], ["ch01/a", "ch01/b"],
+                                                        {"ch01/b": ("ch01/a", "ch01/c")})
+        self.assertEqual(proofs["ch01/b"].violations, [])
+        to_isolate = prove_exercises.check_stubbed(proofs, self.executable, folder, timeout=30)
+        self.assertEqual(to_isolate, [])
+        self.assertEqual(proofs["ch01/b"].violations, [])
+        self.assertEqual(proofs["ch01/b"].stub_column(), "FAIL (its part ch01/a)")
+        proofs = prove_exercises.match_tests_to_regions([self.region("ch01/a")], ["ch01/a", "ch01/b"],
+                                                        {"ch01/b": ("ch01/c", "ch01/d")})
+        prove_exercises.check_stubbed(proofs, self.executable, folder, timeout=30)
+        self.assertIn("without reaching the stub of any of its parts", proofs["ch01/b"].violations[0])
 
     def test_catch_test_spec_escapes_special_characters(self):
         self.assertEqual(prove_exercises.catch_test_spec("ch01/a"), "ch01/a")
