@@ -10,6 +10,7 @@
 #include "light_chi_square.hpp"
 #include "reference_blocks.hpp"
 #include "statistics.hpp"
+#include "test_scenes.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -138,6 +139,64 @@ TEST_CASE("ch03/area-to-solid-angle", "[exercise]") {
     const double cos_light = -to_light.z / glm::length(to_light);  // at the light, whose normal is +z
     CHECK(s->pdf == Approx(glm::dot(to_light, to_light) / (2.0 * cos_light)).epsilon(1e-5));
     check_light_sampling(light, reference, 10);
+}
+
+TEST_CASE("ch03/emission-weight", "[exercise]") {
+    // Emission must be counted once in all. The furnace (Le = 0.5, albedo 0.5 everywhere) with
+    // paths of two segments gives exactly Le (1 + rho) = 0.75 with pt-nee and with pt-mis: Le seen
+    // by the camera, and rho Le found once at the first bounce, by the light sample, the BSDF
+    // sample, or both weighted by MIS. Each mistake has its own answer (bias_detectors.hpp): the
+    // second part counted twice 1.0, the camera's Le dropped 0.25. Then the white mirror and the
+    // white diffuse sphere under a constant sky of radiance 1 are 1 everywhere with pt-nee: the
+    // sky seen through a delta bounce is found only by the BSDF sample, and counts in full. Each
+    // mean against its exact value by a t-test at false-failure rate exercise_test_alpha (4 tests).
+    auto pixel_mean = [](const RenderResult& result) {
+        std::vector<double> values;
+        for (const Spectrum& p : result.image.pixels()) values.push_back(p.g);
+        return values;
+    };
+    testing::TestRender request;
+    request.scene = testing::scene_path("furnace/scene.json");
+    request.samples_per_pixel = 16;
+    request.width = 16;
+    request.height = 16;
+    request.seed = 9;
+    request.max_depth = 2;
+    request.accelerator = "bruteforce";
+    for (const char* integrator : {"pt-nee", "pt-mis"}) {
+        request.integrator = integrator;
+        const RenderResult result = testing::render(request);
+        const std::vector<double> values = pixel_mean(result);
+        const stats::TestResult test = stats::one_sample_t_test(values, 0.75, stats::exercise_test_alpha);
+        double mean = 0.0;
+        for (const double v : values) mean += v / static_cast<double>(values.size());
+        const std::string hint =
+            test.passed ? ""
+                        : testing::likely_mistake(
+                              mean,
+                              {{"emission counted twice: found by the BSDF sample in full and by the light sample too "
+                                "(its weight must be 0 for next-event estimation, the MIS weight for MIS)", 1.0},
+                               {"the emission the camera sees directly is dropped (the camera ray is not a light sample: "
+                                "weight 1)", 0.25}},
+                              0.03);
+        INFO(integrator << ": " << test.message);
+        INFO(hint);
+        CHECK(test.passed);
+    }
+    request.integrator = "pt-nee";
+    request.max_depth = 0;
+    for (const char* scene : {"hard/environment-furnace/mirror.json", "furnace/scene-environment.json"}) {
+        request.scene = testing::scene_path(scene);
+        const std::vector<double> values = pixel_mean(testing::render(request));
+        const stats::TestResult test = stats::one_sample_t_test(values, 1.0, stats::exercise_test_alpha);
+        double mean = 0.0;
+        for (const double v : values) mean += v / static_cast<double>(values.size());
+        INFO(scene << ": " << test.message);
+        INFO((test.passed || mean > 1.0 ? ""
+                                        : "likely mistake: emission found through a delta bounce (a mirror) weighted "
+                                          "0: light sampling cannot find it, so it must count in full"));
+        CHECK(test.passed);
+    }
 }
 
 TEST_CASE("ch03/multiple-importance-sampling", "[exercise]") {

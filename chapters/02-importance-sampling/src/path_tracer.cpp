@@ -8,9 +8,12 @@
 namespace freezeray::ch02 {
 
 // BOOK(russian-roulette)
-float russian_roulette_continue_probability(const Spectrum& throughput) {
-    // EXERCISE(ch02/russian-roulette): the probability of continuing a path, from its throughput, by the rule of book chapter 02, "`pt-is`" (never above 0.95)
-    return std::min(0.95f, max_component(throughput));
+float russian_roulette(Spectrum& weight, float u) {
+    // EXERCISE(ch02/russian-roulette): decide whether the path goes on and reweight a survivor, by the rule of book chapter 02, "`pt-is`", as russian_roulette's comment in path_tracer.hpp states it
+    const float q = std::min(0.95f, max_component(weight));
+    if (u >= q) return 0.0f;
+    weight /= q;
+    return q;
     // END EXERCISE
 }
 // END BOOK
@@ -43,12 +46,10 @@ Spectrum ImportanceSampledPathTracer::li(const Ray& camera_ray, const Scene& sce
         if (is_black(throughput)) break;
 
         // Russian roulette: stop with probability 1 - q, and divide the survivors by q, so the
-        // expected value is unchanged (Arvo and Kirk, "Particle Transport and Image Synthesis", 1990).
-        if (segments >= RussianRouletteStart) {
-            const float q = russian_roulette_continue_probability(throughput);
-            if (sampler.get_1d(VertexDimension::Roulette) >= q) break;
-            throughput /= q;
-        }
+        // expected value is unchanged.
+        if (segments >= RussianRouletteStart &&
+            russian_roulette(throughput, sampler.get_1d(VertexDimension::Roulette)) == 0.0f)
+            break;
         ray = hit->spawn_ray(frame.to_world(sample->wi));
     }
     return radiance;

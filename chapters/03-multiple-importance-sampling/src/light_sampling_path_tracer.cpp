@@ -61,10 +61,15 @@ static Spectrum sample_one_light(const Hit& hit, const Frame& frame, const Vec3&
 
 // BOOK(emission-weight)
 // The weight of emission Le found by following the BSDF sample of `previous` into `light`
-// along direction wi: 1 where light sampling could not have produced the same path, 0 for
-// next-event estimation (light sampling counted it), the MIS weight otherwise.
+// along direction wi: 1 where light sampling could not have produced the same path (the camera
+// ray or a delta lobe before it, emission that belongs to no light, a light the light sampler
+// never chooses at that point: probability 0), 0 for next-event estimation (light sampling
+// counted it), and otherwise the MIS weight of the BSDF sample (previous.bsdf_pdf) against the
+// light sample that could have found the same direction: the probability of choosing this light
+// at `previous` times the light's solid-angle density of wi there.
 static float emission_weight(const PreviousBounce& previous, const Light* light, const Vec3& wi,
                              const LightSampler& lights, const LightSamplingSettings& settings) {
+    // EXERCISE(ch03/emission-weight): the weight of emission found by following a BSDF sample, as this function's comment above states it and book chapter 03, "Multiple importance sampling", explains it: counted once in all, whether light sampling could have found the same light or not
     if (previous.specular || light == nullptr) return 1.0f;
     const float probability = lights.probability(ShadingPoint{previous.position, previous.normal}, *light);
     // Never chosen here (its power rounds to zero, or the light sampler knows it sends no light
@@ -73,6 +78,7 @@ static float emission_weight(const PreviousBounce& previous, const Light* light,
     if (settings.combination == Combination::NextEventEstimation) return 0.0f;
     const float light_pdf = probability * light->pdf_li(previous.position, wi);
     return mis_weight(settings.heuristic, previous.bsdf_pdf, light_pdf);
+    // END EXERCISE
 }
 // END BOOK
 
@@ -116,11 +122,9 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
         if (is_black(throughput)) break;
         previous = {has_flag(sample->flags, BSDF_Specular), sample->pdf, hit->position, hit->shading_normal};
 
-        if (segments >= ch02::RussianRouletteStart) {
-            const float q = ch02::russian_roulette_continue_probability(throughput);
-            if (sampler.get_1d(VertexDimension::Roulette) >= q) break;
-            throughput /= q;
-        }
+        if (segments >= ch02::RussianRouletteStart &&
+            ch02::russian_roulette(throughput, sampler.get_1d(VertexDimension::Roulette)) == 0.0f)
+            break;
         ray = hit->spawn_ray(frame.to_world(sample->wi));
     }
     return radiance;

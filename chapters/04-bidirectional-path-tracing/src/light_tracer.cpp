@@ -141,11 +141,8 @@ void LightTracer::trace_light_path(const Scene& scene, const ch03::FixedLightSam
 
         // Russian roulette on the scattering alone: the emitted part of the throughput is in
         // watts and says nothing about how much of it the path still carries.
-        if (segments >= ch02::RussianRouletteStart) {
-            const float q = ch02::russian_roulette_continue_probability(scattering);
-            if (random.next_float() >= q) break;
-            scattering /= q;
-        }
+        if (segments >= ch02::RussianRouletteStart && ch02::russian_roulette(scattering, random.next_float()) == 0.0f)
+            break;
         ray = hit->spawn_ray(wi_world);
     }
 }

@@ -84,10 +84,9 @@ int random_walk(const Scene& scene, Ray ray, SampleStream& samples, ScratchArena
         // strategy divides by its own survival probabilities, so the estimate stays unbiased
         // and the weights of a path still sum to one.
         if (count >= ch02::RussianRouletteStart) {
-            const float q = ch02::russian_roulette_continue_probability(scattering);
-            if (samples.next_float() >= q) break;
+            const float q = ch02::russian_roulette(scattering, samples.next_float());
+            if (q == 0.0f) break;
             beta /= q;
-            scattering /= q;
         }
         ray = hit->spawn_ray(wi_world);
     }

@@ -24,8 +24,13 @@ private:
     int max_depth_;
 };
 
-// The probability of continuing a path with this throughput (pbrt-v3, section 14.5.1): paths
-// that carry little light are stopped more often, and survivors are reweighted by 1 / p.
-float russian_roulette_continue_probability(const Spectrum& throughput);
+// Russian roulette (Arvo and Kirk, "Particle Transport and Image Synthesis", 1990; pbrt-v3,
+// section 14.5.1), for a path whose weight so far is `weight`. The path continues with
+// probability q, the largest component of its weight but at most 0.95 (paths that carry little
+// light stop more often, and even bright ones end), decided by u in [0, 1): it continues when
+// u < q. A survivor's weight is divided by q, so that the expected value is unchanged. Returns
+// the q a survivor was divided by (for whatever else the caller divides by it, as BDPT's subpaths
+// do), or 0 when the path ends, its weight then left as it was.
+float russian_roulette(Spectrum& weight, float u);
 
 }  // namespace freezeray::ch02
