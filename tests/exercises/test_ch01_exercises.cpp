@@ -5,6 +5,7 @@
 
 #include "bias_detectors.hpp"
 #include "chi_square.hpp"
+#include "evidence.hpp"
 #include "reference_blocks.hpp"
 #include "statistics.hpp"
 #include "test_scenes.hpp"
@@ -52,6 +53,9 @@ TEST_CASE("ch01/uniform-hemisphere", "[exercise]") {
     };
     const std::string hint = result.passed ? "" : testing::likely_density_mistake(sample, suspects, options);
     INFO(hint);
+    // On failure, the chi-square table as images (observed, expected, deviation per cell).
+    const std::string evidence = result.passed ? "" : "evidence: " + stats::write_evidence("ch01/uniform-hemisphere", result);
+    INFO(evidence);
     CHECK(result.passed);
 }
 
@@ -146,5 +150,6 @@ TEST_CASE("ch01/naive-path-tracer", "[exercise]") {
     const testing::ReferenceComparison comparison =
         testing::compare_with_reference("ch01/naive-path-tracer", 8, 128, 1, stats::exercise_test_alpha);
     INFO(comparison.message);
+    INFO(comparison.evidence);
     CHECK(comparison.passed);
 }

@@ -7,6 +7,7 @@
 #include "freezeray/ch02/microfacet.hpp"
 
 #include "chi_square.hpp"
+#include "evidence.hpp"
 #include "reference_blocks.hpp"
 #include "statistics.hpp"
 
@@ -21,8 +22,14 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
+// On failure the chi-square table is written as images (observed, expected, deviation per cell),
+// and the folder named.
 void check_passes(const stats::ChiSquareResult& result) {
     INFO(result.message);
+    const std::string evidence =
+        result.passed ? ""
+                      : "evidence: " + stats::write_evidence(Catch::getResultCapture().getCurrentTestName(), result);
+    INFO(evidence);
     CHECK(result.passed);
 }
 
@@ -114,5 +121,6 @@ TEST_CASE("ch02/importance-sampled-path-tracer", "[exercise]") {
     const testing::ReferenceComparison comparison =
         testing::compare_with_reference("ch02/importance-sampled-path-tracer", 8, 16, 1, stats::exercise_test_alpha);
     INFO(comparison.message);
+    INFO(comparison.evidence);
     CHECK(comparison.passed);
 }

@@ -7,6 +7,7 @@
 #include "freezeray/ch03/mis.hpp"
 
 #include "bias_detectors.hpp"
+#include "evidence.hpp"
 #include "light_chi_square.hpp"
 #include "reference_blocks.hpp"
 #include "statistics.hpp"
@@ -37,6 +38,11 @@ void check_light_sampling(const Light& light, const Vec3& reference, int resolut
     options.resolution = resolution;
     const testing::LightChiSquare test = testing::light_chi_square_test(light, reference, options);
     INFO(test.result.message);
+    const std::string evidence =
+        test.result.passed
+            ? ""
+            : "evidence: " + stats::write_evidence(Catch::getResultCapture().getCurrentTestName(), test.result);
+    INFO(evidence);
     CHECK(test.result.passed);
     CHECK(test.samples_moved_across_edges <= options.sample_count / 10000);
 }
@@ -207,5 +213,6 @@ TEST_CASE("ch03/multiple-importance-sampling", "[exercise]") {
     const testing::ReferenceComparison comparison =
         testing::compare_with_reference("ch03/multiple-importance-sampling", 8, 16, 1, stats::exercise_test_alpha);
     INFO(comparison.message);
+    INFO(comparison.evidence);
     CHECK(comparison.passed);
 }

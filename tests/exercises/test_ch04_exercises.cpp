@@ -100,5 +100,6 @@ TEST_CASE("ch04/bidirectional-path-tracer", "[exercise]") {
     const testing::ReferenceComparison comparison =
         testing::compare_with_reference("ch04/bidirectional-path-tracer", 8, 16, 1, stats::exercise_test_alpha);
     INFO(comparison.message);
+    INFO(comparison.evidence);
     CHECK(comparison.passed);
 }

@@ -57,5 +57,6 @@ TEST_CASE("ch05/metropolis-light-transport", "[exercise]") {
     const freezeray::testing::ReferenceComparison comparison = freezeray::testing::compare_with_reference(
         "ch05/metropolis-light-transport", 8, 16, 1, freezeray::stats::exercise_test_alpha);
     INFO(comparison.message);
+    INFO(comparison.evidence);
     CHECK(comparison.passed);
 }

@@ -80,6 +80,7 @@ class Outcome:
     status: str
     detail: str = ""   # not implemented, needs chNN/x, timed out, wrong result...
     reason: str = ""   # the first line of why, from the test's output
+    evidence: str = ""  # the folder where the test wrote its evidence (images, tables), if it did
 
 
 @dataclass
@@ -92,6 +93,7 @@ class Row:
     earned: int
     result: str
     reason: str = ""
+    evidence: str = ""
 
 
 @dataclass
@@ -214,10 +216,16 @@ def parse_ctest_junit(text: str, verdicts: dict[str, str] | None = None) -> dict
             if detail == "timed out":
                 seconds = float(case.get("time", "0") or 0)
                 reason = f"no result within {seconds:.0f} s: an endless loop, or far too slow"
-            outcomes[name] = Outcome("fail", detail, reason)
+            evidence = EVIDENCE.search(output)
+            outcomes[name] = Outcome("fail", detail, reason, evidence["path"] if evidence else "")
         else:
             outcomes[name] = Outcome("not run", status or "not run")
     return outcomes
+
+
+# A grading test that wrote evidence of its failure (tests/support/evidence.hpp) says where:
+#   "... with message: 'evidence: /path/build/test-evidence/ch01_uniform-hemisphere'"
+EVIDENCE = re.compile(r"evidence: (?P<path>[^'\s]+)")
 
 
 def failure_detail(name: str, message: str, output: str) -> str:
@@ -248,6 +256,7 @@ COMPACT_FAILURE = re.compile(r":\d+: failed: (?P<check>.*?)(?: for: (?P<expansio
 
 def best_message(messages: list[str], fallback: str) -> str:
     """A bias detector's "likely mistake", else the message that says FAILED, else the first."""
+    messages = [m for m in messages if not m.startswith("evidence: ")]  # a path, not a reason
     for wanted in ("likely mistake:", "FAILED"):
         for message in messages:
             if wanted in message:
@@ -318,7 +327,8 @@ def build_rows(outcomes: dict[str, Outcome], region_names: list[str], default_po
         if outcome.status == "pass":
             rows.append(Row(name, chapter_name, worth, worth, "pass"))
         elif outcome.status == "fail":
-            rows.append(Row(name, chapter_name, worth, 0, f"FAIL ({outcome.detail})", outcome.reason))
+            rows.append(Row(name, chapter_name, worth, 0, f"FAIL ({outcome.detail})", outcome.reason,
+                            outcome.evidence))
         else:
             rows.append(Row(name, chapter_name, worth, 0, outcome.detail))
     return rows
@@ -354,6 +364,8 @@ def format_report(rows: list[Row]) -> str:
         for row in (r for r in rows if r.chapter == chapter):
             reason = f": {row.reason}" if row.reason else ""
             lines.append(f"{row.exercise:{width}}{f'{row.earned}/{row.points}':>8}  {row.result}{reason}")
+            if row.evidence:
+                lines.append(f"{'':{width}}{'':>8}  evidence (images, tables): {row.evidence}")
         lines.append(f"{chapter + ' total':{width}}{f'{earned}/{possible}':>8}  {percent(earned, possible)}")
         lines.append("")
     earned = sum(row.earned for row in rows)

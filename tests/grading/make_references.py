@@ -26,6 +26,7 @@ import csv
 import json
 import math
 import shlex
+import shutil
 import struct
 import subprocess
 import sys
@@ -170,6 +171,7 @@ def make_image(root: Path, build_dir: Path, assignment: exercises.Assignment, im
     run([str(program), "compare", *report_arguments(root, report), "--spp", str(report["spp"]),
          "--threads", str(threads), "--reference", str(reference), "--out", str(solution), "--quiet"])
     relmse = last_relative_mse(solution, report["integrator"])
+    shutil.rmtree(solution)  # only its number is kept: the folder is handed out to students
     (folder / "solution.json").write_text(json.dumps({
         "assignment": assignment.name, "report": report, "seed": REPORT_SEED,
         "solution_relative_mse": relmse,

@@ -80,7 +80,8 @@ class Proof:
         if self.name in run.stubs:
             return f"FAIL (its stub{where})"
         if self.parts and any(part in run.stubs for part in self.parts):
-            return f"FAIL (its part {next(p for p in run.stubs if p in self.parts)})"
+            where = " (its chapter stubbed)" if self.isolated else ""
+            return f"FAIL (its part {next(p for p in run.stubs if p in self.parts)}{where})"
         if self.isolated is not None:
             return "FAIL (stubbed alone)"
         if run.stubs:
@@ -196,10 +197,11 @@ def student_executable(solution_build: Path, solution_executable: Path, student_
     return found
 
 
-def refresh_copy(source: Path, work: Path, only: str | None = None, stub: bool = True) -> Path:
+def refresh_copy(source: Path, work: Path, only: str | None = None, stub: bool = True,
+                 chapter: str | None = None) -> Path:
     """Make (or bring up to date) the student copy in work/source; return its path."""
     copy = work / "source"
-    counts = make_student_copy.make_student_copy(source, copy, only=only, update=True, stub=stub)
+    counts = make_student_copy.make_student_copy(source, copy, only=only, chapter=chapter, update=True, stub=stub)
     print_step(f"student copy in {copy}: {counts['stubbed']} exercise(s) stubbed, "
                f"{counts['written']} file(s) rewritten")
     return copy
@@ -326,7 +328,9 @@ def check_stubbed(proofs: dict[str, Proof], executable: Path, build_dir: Path, t
         if proof.stubbed.passed:
             proof.violations.append(f"{proof.name}: passes on the stub, so the test does not check the exercise")
         elif proof.parts:  # an assignment made of regions: it must reach one of its parts' stubs
-            if not any(part in proof.stubbed.stubs for part in proof.parts):
+            if proof.stubbed.stubs and proof.stubbed.stubs[0] not in proof.parts:
+                to_isolate.append(proof.name)  # it stopped at an earlier chapter's exercise first
+            elif not any(part in proof.stubbed.stubs for part in proof.parts):
                 proof.violations.append(f"{proof.name}: fails on the student copy without reaching the stub of any "
                                         f"of its parts ({', '.join(proof.parts)})")
         elif proof.name not in proof.stubbed.stubs:
@@ -339,14 +343,23 @@ def isolate(proofs: dict[str, Proof], names: list[str], source: Path, work: Path
     """Check each named exercise on a copy where it alone is stubbed (incremental rebuilds)."""
     student_build = work / "build"
     for name in names:
-        print_step(f"isolating {name}: stubbing it alone")
-        refresh_copy(source, work, only=name)
+        proof = proofs[name]
+        if proof.parts:  # an assignment made of regions: its chapter's regions, its parts among them, stubbed
+            chapter = name.split("/", 1)[0]
+            print_step(f"isolating {name}: stubbing chapter {chapter}'s exercises alone")
+            refresh_copy(source, work, chapter=chapter)
+        else:
+            print_step(f"isolating {name}: stubbing it alone")
+            refresh_copy(source, work, only=name)
         build_student_tests(student_build, jobs)
         executable = student_executable(solution_build, solution_executable, student_build)
-        proofs[name].isolated = run_test(executable, name, student_build, timeout)
-        if proofs[name].isolated.passed:
-            proofs[name].violations.append(f"{name}: passes when it alone is stubbed, so the test "
-                                           "does not check the exercise")
+        proof.isolated = run_test(executable, name, student_build, timeout)
+        if proof.isolated.passed:
+            proof.violations.append(f"{name}: passes when it alone is stubbed, so the test "
+                                    "does not check the exercise")
+        elif proof.parts and not any(part in proof.isolated.stubs for part in proof.parts):
+            proof.violations.append(f"{name}: fails with its chapter's exercises stubbed without reaching the stub "
+                                    f"of any of its parts ({', '.join(proof.parts)})")
 
 
 def check_prerequisites(proofs: dict[str, Proof], prerequisites: dict[str, list[str]]) -> list[str]:
@@ -376,7 +389,8 @@ def report_unisolated(proofs: dict[str, Proof], names: list[str]) -> None:
 def format_table(proofs: dict[str, Proof]) -> str:
     """The proof as a table: exercise, solution, stub, verdict."""
     width = max([len("exercise"), *(len(name) for name in proofs)]) + 2
-    lines = [f"{'exercise':{width}}{'solution':10}{'stub':34}verdict", "-" * (width + 52)]
+    stub_width = max([34, *(len(proof.stub_column()) + 2 for proof in proofs.values())])
+    lines = [f"{'exercise':{width}}{'solution':10}{'stub':{stub_width}}verdict", "-" * (width + stub_width + 18)]
     for proof in proofs.values():
         solution = proof.solution.describe() if proof.solution else "-"
         checked = proof.stubbed is not None or not (proof.has_test and proof.has_region)
@@ -385,7 +399,7 @@ def format_table(proofs: dict[str, Proof]) -> str:
             verdict += " (no test)"
         elif not proof.has_region:
             verdict += " (no region)"
-        lines.append(f"{proof.name:{width}}{solution:10}{proof.stub_column():34}{verdict}")
+        lines.append(f"{proof.name:{width}}{solution:10}{proof.stub_column():{stub_width}}{verdict}")
     return "\n".join(lines)
 
 

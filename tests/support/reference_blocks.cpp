@@ -1,11 +1,13 @@
 // Comparing an assignment's renders with the solution's, block by block (reference_blocks.hpp).
 #include "reference_blocks.hpp"
 
+#include "evidence.hpp"
 #include "statistics.hpp"
 #include "test_scenes.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <vector>
@@ -44,18 +46,18 @@ ReferenceComparison compare_with_reference(const std::string& assignment, int ba
                                            std::uint64_t first_seed, double alpha) {
     const std::string path = reference_path(assignment);
     std::ifstream file(path);
-    if (!file) return {false, path + " is missing: make it with tests/grading/make_references.py --blocks"};
+    if (!file) return {false, path + " is missing: make it with tests/grading/make_references.py --blocks", ""};
     const nlohmann::json reference = nlohmann::json::parse(file);
     const std::uint64_t reference_seed = reference.at("seed").get<std::uint64_t>();
     const std::uint64_t reference_batches = reference.at("batches").get<std::uint64_t>();
     if (first_seed < reference_seed + reference_batches && reference_seed < first_seed + batches)
-        return {false, "the test's seeds overlap the reference's: they must be independent"};
+        return {false, "the test's seeds overlap the reference's: they must be independent", ""};
 
     std::size_t tests = 0;
     for (const auto& view : reference.at("views")) tests += 3 * view.at("mean").size();
     const double alpha_each = stats::sidak_alpha(alpha, tests);
 
-    ReferenceComparison result{true, ""};
+    ReferenceComparison result{true, "", ""};
     double worst_p = 2.0;
     std::size_t failing = 0;
     int view_number = 0;
@@ -69,15 +71,24 @@ ReferenceComparison compare_with_reference(const std::string& assignment, int ba
         request.height = view.at("height").get<int>();
         request.max_depth = view.at("max_depth").get<int>();
         request.samples_per_pixel = spp_per_batch;
-        request.accelerator = "bruteforce";  // chapters 01 to 05's own (the KD-tree is chapter 06's exercise)
+        // What chapters 01 to 05 render with (the references were made with their renderers): brute
+        // force (the KD-tree is chapter 06's exercise) and textures read as chapter 02 reads them
+        // (chapter 08's tiles and MIP maps are its exercises).
+        request.accelerator = "bruteforce";
+        request.texture_settings = {{"layout", "linear"}, {"filter", "bilinear"}};
         std::vector<std::vector<Spectrum>> per_batch;
         std::uint64_t invalid = 0;
+        Image render_mean(request.width, request.height);  // the mean of the batches, for the evidence
         for (int b = 0; b < batches; ++b) {
             request.seed = first_seed + static_cast<std::uint64_t>(b);
             const RenderResult rendered = render(request);
             invalid += rendered.invalid_samples;
             per_batch.push_back(block_means(rendered.image, blocks_x, blocks_y));
+            for (std::size_t i = 0; i < render_mean.pixel_count(); ++i)
+                render_mean[i] += rendered.image[i] / static_cast<float>(batches);
         }
+        const std::size_t failing_before = failing;
+        Image mine_blocks(blocks_x, blocks_y), reference_blocks(blocks_x, blocks_y), t_statistics(blocks_x, blocks_y);
         const std::string where = "view " + std::to_string(view_number) + " (" + view.at("scene").get<std::string>() +
                                   ", " + request.integrator + ")";
         if (invalid != 0) {
@@ -96,6 +107,11 @@ ReferenceComparison compare_with_reference(const std::string& assignment, int ba
                 const stats::MeanEstimate solution{means[block][c].get<double>(), error * error,
                                                    static_cast<double>(reference_batches - 1)};
                 const double p = stats::welch_p_value(mine, solution);
+                const int bx = static_cast<int>(block) % blocks_x, by = static_cast<int>(block) / blocks_x;
+                mine_blocks.at(bx, by)[c] = static_cast<float>(mine.mean);
+                reference_blocks.at(bx, by)[c] = static_cast<float>(solution.mean);
+                const double spread = std::sqrt(mine.variance_of_mean + solution.variance_of_mean);
+                t_statistics.at(bx, by)[c] = spread > 0.0 ? static_cast<float>((mine.mean - solution.mean) / spread) : 0.0f;
                 if (p > alpha_each) continue;
                 ++failing;
                 if (p >= worst_p) continue;
@@ -107,6 +123,15 @@ ReferenceComparison compare_with_reference(const std::string& assignment, int ba
                               blocks_y, "rgb"[c], mine.mean, solution.mean, error, p);
                 result.message = where + ": " + text;
             }
+        if (failing != failing_before && result.evidence.empty())
+            result.evidence = "evidence: " + stats::write_evidence(
+                                                 assignment,
+                                                 {{"mine", render_mean},
+                                                  {"mine-blocks", mine_blocks},
+                                                  {"reference-blocks", reference_blocks},
+                                                  {"t", t_statistics}},
+                                                 where + ": your render (the mean of the batches), its block means, "
+                                                         "the solution's, and the t statistic of each block");
     }
     if (failing != 0) {
         result.passed = false;
