@@ -143,10 +143,11 @@ TEST_CASE("ch01/path-throughput", "[exercise]") {
 }
 
 TEST_CASE("ch01/naive-path-tracer", "[exercise]") {
-    // The assignment (tests/grading/assignments.json): this chapter's exercises together render
-    // the Cornell box with pt-naive as the solution does. 8 independent renders of 128 samples per pixel, each
-    // block of pixels against the solution's reference (make_references.py --blocks, other seeds),
-    // false-failure rate exercise_test_alpha for the whole comparison (reference_blocks.hpp).
+    // The assignment (tests/grading/assignments.json): this chapter's exercises together render the
+    // Cornell box with pt-naive as the solution does. 8 independent renders of 128 samples per pixel;
+    // each block of pixels, and the whole image, against the solution's reference (make_references.py
+    // --blocks, other seeds, 8 to 32 times the samples), false-failure rate exercise_test_alpha for
+    // the whole comparison (reference_blocks.hpp).
     const testing::ReferenceComparison comparison =
         testing::compare_with_reference("ch01/naive-path-tracer", 8, 128, 1, stats::exercise_test_alpha);
     INFO(comparison.message);

@@ -49,11 +49,11 @@ TEST_CASE("ch05/small-step", "[exercise]") {
 }
 
 TEST_CASE("ch05/metropolis-light-transport", "[exercise]") {
-    // The assignment (tests/grading/assignments.json): this chapter's exercises together render
-    // the Cornell box with mlt as the solution does. 8 independent renders (each its own chains and
-    // bootstrap) of 16 samples per pixel, each block of pixels against the solution's reference
-    // (make_references.py --blocks, other seeds), false-failure rate exercise_test_alpha for the
-    // whole comparison (reference_blocks.hpp).
+    // The assignment (tests/grading/assignments.json): this chapter's exercises together render the
+    // Cornell box with mlt as the solution does. 8 independent renders (each its own chains and
+    // bootstrap) of 16 samples per pixel; each block of pixels, and the whole image, against the
+    // solution's reference (make_references.py --blocks, other seeds, 8 to 32 times the samples),
+    // false-failure rate exercise_test_alpha for the whole comparison (reference_blocks.hpp).
     const freezeray::testing::ReferenceComparison comparison = freezeray::testing::compare_with_reference(
         "ch05/metropolis-light-transport", 8, 16, 1, freezeray::stats::exercise_test_alpha);
     INFO(comparison.message);

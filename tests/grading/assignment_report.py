@@ -62,19 +62,40 @@ def build_renderer(build_dir: Path, target: str, jobs: int) -> str:
     return (errors[0] if errors else f"the build of {target} failed") + f" (log: {log})"
 
 
-def verdict_of(relmse: float | None, solution: float | None, failure: str) -> str:
-    """One sentence on the student's image against the solution's."""
+def brightness_sentence(mine: list[float] | None, solution: list[float], reference: list[float]) -> str:
+    """What the image's mean brightness says: a bias shows there even when noise hides it pixel by
+    pixel. Judged against the solution's own deviation at the same samples (its noise), with a
+    floor of 2 %."""
+    if mine is None:
+        return ""
+    def luminance(c: list[float]) -> float:
+        return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+    if luminance(reference) <= 0.0:
+        return ""
+    ratio = luminance(mine) / luminance(reference)
+    allowed = max(3.0 * abs(luminance(solution) / luminance(reference) - 1.0), 0.02)
+    if abs(ratio - 1.0) <= allowed:
+        return f" Its mean brightness is {100 * ratio:.1f} % of the reference's, as the solution's is."
+    side = "darker" if ratio < 1.0 else "brighter"
+    return (f" But its mean brightness is {100 * ratio:.1f} % of the reference's (the solution's is within "
+            f"{100 * allowed:.0f} %): your image is {side} than it should be, a bias rather than noise.")
+
+
+def verdict_of(relmse: float | None, solution: float | None, failure: str, brightness: str = "") -> str:
+    """A few sentences on the student's image against the solution's."""
     if failure:
         return f"No image: {failure}"
     if relmse is None or solution is None:
         return "No error could be measured."
     ratio = relmse / solution if solution > 0 else float("inf")
     if ratio <= SAME_AS_SOLUTION_RATIO:
-        return (f"Your render's error against the reference, relMSE {relmse:.4g}, is the solution's at the same "
-                f"samples and seed ({solution:.4g}; ratio {ratio:.2f}): it looks as it should.")
-    return (f"Your render's error against the reference, relMSE {relmse:.4g}, is {ratio:.1f} times the solution's at "
-            f"the same samples and seed ({solution:.4g}): compare the images, and see in the error image where "
-            "they differ.")
+        text = (f"Your render's error against the reference, relMSE {relmse:.4g}, is about the solution's at the same "
+                f"samples and seed ({solution:.4g}; ratio {ratio:.2f}).")
+    else:
+        text = (f"Your render's error against the reference, relMSE {relmse:.4g}, is {ratio:.1f} times the solution's "
+                f"at the same samples and seed ({solution:.4g}): compare the images, and see in the error image where "
+                "they differ.")
+    return text + brightness
 
 
 def fill(template: str, values: dict[str, str]) -> str:
@@ -91,11 +112,12 @@ def make_one(assignment: exercises.Assignment, build_dir: Path, source: Path, re
     key = assignment.name.replace("/", "-")
     folder = report_root / key
     folder.mkdir(parents=True, exist_ok=True)
-    reference = references / key / "reference.exr"
+    reference = references / key / "reference.pfm"
     solution_file = references / key / "solution.json"
     renderer = assignment.chapter
     failure = ""
     relmse = solution = None
+    brightness = ""
     command: list[str] = []
     if not reference.is_file() or not solution_file.is_file():
         failure = (f"no reference in {references / key}: make the references on the solution's tree with "
@@ -103,17 +125,26 @@ def make_one(assignment: exercises.Assignment, build_dir: Path, source: Path, re
     else:
         failure = build_renderer(build_dir, renderer, jobs)
     if not failure:
-        solution = float(json.loads(solution_file.read_text(encoding="utf-8"))["solution_relative_mse"])
-        command = [str(build_dir / "chapters" / renderer), "compare",
-                   *make_references.report_arguments(source, spec), "--spp", str(spec["spp"]),
+        known = json.loads(solution_file.read_text(encoding="utf-8"))
+        solution = float(known["solution_relative_mse"])
+        program = str(build_dir / "chapters" / renderer)
+        settings = [*make_references.report_arguments(source, spec), "--spp", str(spec["spp"]),
+                    "--seed", str(make_references.REPORT_SEED)]
+        command = [program, "compare", *settings, "--integrators", spec["integrator"],
                    "--reference", str(reference.resolve()), "--out", str((folder / "compare").resolve()), "--quiet"]
-        rendered = subprocess.run(command, capture_output=True, text=True)
-        if rendered.returncode != 0:
-            lines = [line for line in rendered.stderr.splitlines() if line.strip()]
-            failure = f"the renderer stopped: {lines[-1] if lines else 'exit status ' + str(rendered.returncode)}"
-        else:
+        image = folder / "mine.pfm"
+        for run in (command, [program, "render", *settings, "--integrator", spec["integrator"],
+                              "--out", str(image.resolve()), "--quiet"]):
+            rendered = subprocess.run(run, capture_output=True, text=True)
+            if rendered.returncode != 0:
+                lines = [line for line in rendered.stderr.splitlines() if line.strip()]
+                failure = f"the renderer stopped: {lines[-1] if lines else 'exit status ' + str(rendered.returncode)}"
+                break
+        if not failure:
             relmse = make_references.last_relative_mse(folder / "compare", spec["integrator"])
-    verdict = verdict_of(relmse, solution, failure)
+            brightness = brightness_sentence(make_references.image_mean(image), known["solution_mean"],
+                                             known["reference_mean"])
+    verdict = verdict_of(relmse, solution, failure, brightness)
     images = "compare/images"
     mine = f"{images}/{spec['integrator']}.png"
     values = {

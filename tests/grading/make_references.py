@@ -11,10 +11,10 @@ over the batches are written to tests/data/references/chNN-name.json. The standa
 from the spread of the batches, so it holds for integrators that splat (bdpt) as for the others.
 
 --images DIR (what grade.py --report shows; large, not committed): for every assignment with a
-"report", a reference image at reference_spp (`chNN compare --make-reference`, whose seed differs
-from the comparison's) in DIR/chNN-name/reference.exr, and the solution's own render at the
-report's spp measured against it, DIR/chNN-name/solution.json: the relMSE a correct solution
-reaches at that budget, which the report prints beside the student's.
+"report", a reference image at reference_spp from its own seed in DIR/chNN-name/reference.pfm,
+and in DIR/chNN-name/solution.json what the solution's own render at the report's spp and seed
+gives: its relMSE against the reference and its mean brightness (and the reference's), which the
+report prints beside the student's.
 
 The build must be of the solution (not a student copy): these are what correct code renders.
 """
@@ -26,7 +26,6 @@ import csv
 import json
 import math
 import shlex
-import shutil
 import struct
 import subprocess
 import sys
@@ -38,7 +37,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import exercises  # noqa: E402
 
 REFERENCES_FOLDER = Path("tests") / "data" / "references"
-REPORT_SEED = 7  # the seed of the report's renders; the reference's own is derived from it
+REPORT_SEED = 7        # the seed of the report's renders (the student's, and the solution's for comparison)
+REFERENCE_SEED = 1007  # the report's reference, independent of them
 
 
 def reference_file(root: Path, name: str) -> Path:
@@ -113,7 +113,8 @@ def make_blocks(root: Path, build_dir: Path, assignment: exercises.Assignment, t
                 out = Path(folder) / "batch.pfm"
                 command = [str(program), "render", str(root / view["scene"]), "--integrator", view["integrator"],
                            "--width", str(view["width"]), "--height", str(view["height"]),
-                           "--max-depth", str(view["max_depth"]), "--spp", str(spp // batches),
+                           *(["--max-depth", str(view["max_depth"])] if "max_depth" in view else []),
+                           "--spp", str(spp // batches),
                            "--seed", str(seed + batch), "--threads", str(threads), "--out", str(out), "--quiet"]
                 run(command)
                 width, height, pixels = read_pfm(out)
@@ -123,7 +124,15 @@ def make_blocks(root: Path, build_dir: Path, assignment: exercises.Assignment, t
                 mean.append([sum(batch[b][c] for batch in per_batch) / batches for c in range(3)])
                 error.append([math.sqrt(sum((batch[b][c] - mean[b][c]) ** 2 for batch in per_batch)
                                         / (batches - 1) / batches) for c in range(3)])
-            views.append({**view, "mean": mean, "standard_error": error})
+            # The whole image, tested too: a small bias everywhere (a roulette without reweighting)
+            # hides in the noise of each block but not in the image's mean. Its standard error
+            # comes from the batches as well, since pixels need not be independent (mlt's chains).
+            whole = [[sum(block[c] for block in batch) / len(batch) for c in range(3)] for batch in per_batch]
+            image_mean = [sum(w[c] for w in whole) / batches for c in range(3)]
+            image_error = [math.sqrt(sum((w[c] - image_mean[c]) ** 2 for w in whole) / (batches - 1) / batches)
+                           for c in range(3)]
+            views.append({**view, "mean": mean, "standard_error": error,
+                          "image_mean": image_mean, "image_standard_error": image_error})
             print(f"{assignment.name}: {view['scene']} {view['integrator']}: {len(mean)} blocks, "
                   f"largest relative standard error {max(e[c] / max(m[c], 1e-9) for m, e in zip(mean, error) for c in range(3)):.4f}")
     document = {
@@ -154,27 +163,40 @@ def last_relative_mse(compare_folder: Path, integrator: str) -> float:
 
 def report_arguments(root: Path, report: dict) -> list[str]:
     """The scene and the settings every render of a report shares."""
-    return [str(root / report["scene"]), "--integrators", report["integrator"],
-            "--width", str(report["width"]), "--height", str(report["height"]), "--seed", str(REPORT_SEED)]
+    return [str(root / report["scene"]), "--width", str(report["width"]), "--height", str(report["height"])]
+
+
+def image_mean(path: Path) -> list[float]:
+    """The mean of a PFM image, per channel."""
+    width, height, pixels = read_pfm(path)
+    return [sum(p[c] for p in pixels) / (width * height) for c in range(3)]
 
 
 def make_image(root: Path, build_dir: Path, assignment: exercises.Assignment, images: Path, threads: int) -> Path:
-    """The report's reference image of one assignment and the solution's relMSE against it."""
+    """The report's reference image of one assignment, and the solution's relMSE and mean
+    brightness at the report's samples and seed."""
     report = assignment.render
     folder = images / assignment.name.replace("/", "-")
     folder.mkdir(parents=True, exist_ok=True)
     program = renderer(build_dir, assignment.name)
-    reference = folder / "reference.exr"
-    run([str(program), "compare", *report_arguments(root, report), "--spp", str(report["reference_spp"]),
-         "--threads", str(threads), "--make-reference", str(reference), "--quiet"])
-    solution = folder / "solution"
-    run([str(program), "compare", *report_arguments(root, report), "--spp", str(report["spp"]),
-         "--threads", str(threads), "--reference", str(reference), "--out", str(solution), "--quiet"])
-    relmse = last_relative_mse(solution, report["integrator"])
-    shutil.rmtree(solution)  # only its number is kept: the folder is handed out to students
+    reference = folder / "reference.pfm"
+    run([str(program), "render", *report_arguments(root, report), "--integrator", report["integrator"],
+         "--spp", str(report["reference_spp"]), "--seed", str(REFERENCE_SEED), "--threads", str(threads),
+         "--out", str(reference), "--quiet"])
+    with tempfile.TemporaryDirectory() as scratch:
+        solution = Path(scratch) / "solution"
+        run([str(program), "compare", *report_arguments(root, report), "--integrators", report["integrator"],
+             "--spp", str(report["spp"]), "--seed", str(REPORT_SEED), "--threads", str(threads),
+             "--reference", str(reference), "--out", str(solution), "--quiet"])
+        relmse = last_relative_mse(solution, report["integrator"])
+        image = Path(scratch) / "solution.pfm"
+        run([str(program), "render", *report_arguments(root, report), "--integrator", report["integrator"],
+             "--spp", str(report["spp"]), "--seed", str(REPORT_SEED), "--threads", str(threads),
+             "--out", str(image), "--quiet"])
+        solution_mean = image_mean(image)
     (folder / "solution.json").write_text(json.dumps({
-        "assignment": assignment.name, "report": report, "seed": REPORT_SEED,
-        "solution_relative_mse": relmse,
+        "assignment": assignment.name, "report": report, "seed": REPORT_SEED, "reference_seed": REFERENCE_SEED,
+        "solution_relative_mse": relmse, "solution_mean": solution_mean, "reference_mean": image_mean(reference),
     }, indent=1) + "\n", encoding="utf-8")
     print(f"{assignment.name}: reference {reference}; the solution's relMSE at {report['spp']} spp: {relmse:.4g}")
     return folder

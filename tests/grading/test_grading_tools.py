@@ -357,8 +357,16 @@ class References(unittest.TestCase):
 
 class AssignmentReports(unittest.TestCase):
     def test_verdicts(self):
-        self.assertIn("it looks as it should", assignment_report.verdict_of(0.02, 0.02, ""))
+        self.assertIn("is about the solution's", assignment_report.verdict_of(0.02, 0.02, ""))
         self.assertIn("3.0 times the solution's", assignment_report.verdict_of(0.06, 0.02, ""))
+        # a bias shows in the mean brightness even when noise hides it pixel by pixel
+        reference = [0.5, 0.5, 0.5]
+        self.assertIn("as the solution's is", assignment_report.brightness_sentence([0.505] * 3, [0.498] * 3, reference))
+        dark = assignment_report.brightness_sentence([0.45] * 3, [0.498] * 3, reference)
+        self.assertIn("90.0 % of the reference's", dark)
+        self.assertIn("darker than it should be", dark)
+        self.assertIn("brighter", assignment_report.brightness_sentence([0.6] * 3, [0.49] * 3, reference))
+        self.assertIn("as the solution's is", assignment_report.brightness_sentence([0.6] * 3, [0.45] * 3, reference))
         self.assertEqual(assignment_report.verdict_of(None, None, "the renderer stopped: x"),
                          "No image: the renderer stopped: x")
 

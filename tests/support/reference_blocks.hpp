@@ -19,8 +19,9 @@ struct ReferenceComparison {
 
 // Renders each view of `assignment`'s reference in `batches` renders of `spp_per_batch` samples
 // (seeds first_seed, first_seed + 1, ...; the reference's seeds must differ) and tests, for every
-// block and channel, "the mean of the student's batches equals the reference's" by Welch's t-test
-// (the reference's standard error comes from its own batches). The false-failure rate of the
+// block and channel, and for the whole image per channel (where a small bias everywhere shows), "the
+// mean of the student's batches equals the reference's" by Welch's t-test (the reference's standard
+// error comes from its own batches). The false-failure rate of the
 // whole comparison is `alpha`, shared over the blocks, channels and views by Šidák's correction.
 // Samples that are NaN, Inf or negative fail it too. On failure the evidence folder holds, for
 // the first view that differs, the student's render (mean of the batches, mine.pfm), its block
