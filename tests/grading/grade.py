@@ -251,7 +251,7 @@ BLOCK_TITLES = ("with expansion:", "with message:", "with messages:", "due to un
 # Catch2's compact reporter (the grading tests'): one line per failure,
 #   "file.cpp:95: failed: test.passed for: false with 2 messages: 'a' and 'likely mistake: ...'"
 COMPACT_FAILURE = re.compile(r":\d+: failed: (?P<check>.*?)(?: for: (?P<expansion>.*?))?"
-                             r"(?: with (?:\d+ messages|message): (?P<messages>'.*'))?$")
+                             r"(?: with (?:\d+ messages?|message): (?P<messages>'.*'))?$")
 
 
 def best_message(messages: list[str], fallback: str) -> str:

@@ -503,6 +503,11 @@ class GradeReport(unittest.TestCase):
         self.assertEqual(outcomes["ch02/mirror"].detail, "needs ch01/twice")
         self.assertEqual(outcomes["ch02/other"].detail, "timed out")
 
+    def test_catch_counts_one_message_in_the_singular(self):
+        line = ("t.cpp:9: failed: a == Approx( 0.9 ) for: 0.75f == Approx( 0.9 ) with 1 message: "
+                "'likely mistake: the balance heuristic'")
+        self.assertEqual(grade.first_reason(line), "likely mistake: the balance heuristic")
+
     def test_evidence_is_kept_apart_from_the_reason(self):
         junit = CANNED_JUNIT.replace(
             "<system-out>  exercise ch01/twice is not implemented yet</system-out>",
