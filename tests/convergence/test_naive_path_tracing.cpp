@@ -5,6 +5,7 @@
 
 #include "statistics.hpp"
 #include "determinism.hpp"
+#include "image_tests.hpp"
 #include "test_scenes.hpp"
 
 #include <catch2/catch.hpp>
@@ -25,9 +26,8 @@ TEST_CASE("pt-naive matches Le / (1 - albedo) in the furnace", "[convergence][ch
     const RenderResult result = testing::render(request);
     REQUIRE(result.invalid_samples == 0u);
     for (int c = 0; c < 3; ++c) {
-        std::vector<double> values;
-        for (const Spectrum& p : result.image.pixels()) values.push_back(p[c]);
-        const stats::TestResult test = stats::one_sample_t_test(values, 1.0, stats::convergence_test_alpha);
+        const stats::TestResult test =
+            stats::one_sample_t_test(stats::channel_values(result.image, c), 1.0, stats::convergence_test_alpha);
         INFO("channel " << c << ": " << test.message);
         CHECK(test.passed);
     }

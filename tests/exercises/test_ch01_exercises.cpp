@@ -6,6 +6,7 @@
 #include "bias_detectors.hpp"
 #include "chi_square.hpp"
 #include "evidence.hpp"
+#include "image_tests.hpp"
 #include "reference_blocks.hpp"
 #include "statistics.hpp"
 #include "test_scenes.hpp"
@@ -96,23 +97,17 @@ TEST_CASE("ch01/path-throughput", "[exercise]") {
     request.height = 16;
     request.seed = 5;
     request.accelerator = "bruteforce";  // chapter 01's own (the KD-tree would run chapter 06's exercises)
-    auto pixel_values = [](const RenderResult& result) {
-        std::vector<double> values;
-        for (const Spectrum& p : result.image.pixels()) values.push_back(p.g);
-        return values;
-    };
     const RenderResult result = testing::render(request);
-    const stats::TestResult test = stats::one_sample_t_test(pixel_values(result), 1.0, stats::exercise_test_alpha);
+    const stats::TestResult test = stats::one_sample_t_test(stats::channel_values(result.image, 1), 1.0, stats::exercise_test_alpha);
 
     // Paths of at most two segments (one bounce): exactly Le (1 + albedo) = 0.75. Short paths
     // make the classic mistakes' answers exact too, Le (1 + q) with q the mistaken weight's mean
     // (bias_detectors.hpp), without the heavy tails that long products of a wrong weight have;
     // their answers are at least 6 % apart, and this mean's standard error is about 0.5 %.
     request.max_depth = 2;
-    const std::vector<double> short_paths = pixel_values(testing::render(request));
+    const std::vector<double> short_paths = stats::channel_values(testing::render(request).image, 1);
     const stats::TestResult test_short = stats::one_sample_t_test(short_paths, 0.75, stats::exercise_test_alpha);
-    double mean = 0.0;
-    for (const double v : short_paths) mean += v / static_cast<double>(short_paths.size());
+    const double mean = stats::estimate_mean(short_paths).mean;
     INFO(test.message);
     INFO(test_short.message);
     const std::string hint = test.passed && test_short.passed
@@ -130,7 +125,7 @@ TEST_CASE("ch01/path-throughput", "[exercise]") {
     request.scene = testing::scene_path("furnace/scene-environment.json");
     request.max_depth = 0;
     const RenderResult outside = testing::render(request);
-    const stats::TestResult test_outside = stats::one_sample_t_test(pixel_values(outside), 1.0, stats::exercise_test_alpha);
+    const stats::TestResult test_outside = stats::one_sample_t_test(stats::channel_values(outside.image, 1), 1.0, stats::exercise_test_alpha);
     INFO(test_outside.message);
     const std::string sign_hint =
         outside.invalid_samples == 0

@@ -8,6 +8,7 @@
 
 #include "bias_detectors.hpp"
 #include "evidence.hpp"
+#include "image_tests.hpp"
 #include "light_chi_square.hpp"
 #include "reference_blocks.hpp"
 #include "statistics.hpp"
@@ -156,11 +157,6 @@ TEST_CASE("ch03/emission-weight", "[exercise]") {
     // white diffuse sphere under a constant sky of radiance 1 are 1 everywhere with pt-nee: the
     // sky seen through a delta bounce is found only by the BSDF sample, and counts in full. Each
     // mean against its exact value by a t-test at false-failure rate exercise_test_alpha (4 tests).
-    auto pixel_mean = [](const RenderResult& result) {
-        std::vector<double> values;
-        for (const Spectrum& p : result.image.pixels()) values.push_back(p.g);
-        return values;
-    };
     testing::TestRender request;
     request.scene = testing::scene_path("furnace/scene.json");
     request.samples_per_pixel = 16;
@@ -172,10 +168,9 @@ TEST_CASE("ch03/emission-weight", "[exercise]") {
     for (const char* integrator : {"pt-nee", "pt-mis"}) {
         request.integrator = integrator;
         const RenderResult result = testing::render(request);
-        const std::vector<double> values = pixel_mean(result);
+        const std::vector<double> values = stats::channel_values(result.image, 1);
         const stats::TestResult test = stats::one_sample_t_test(values, 0.75, stats::exercise_test_alpha);
-        double mean = 0.0;
-        for (const double v : values) mean += v / static_cast<double>(values.size());
+        const double mean = stats::estimate_mean(values).mean;
         const std::string hint =
             test.passed ? ""
                         : testing::likely_mistake(
@@ -193,10 +188,9 @@ TEST_CASE("ch03/emission-weight", "[exercise]") {
     request.max_depth = 0;
     for (const char* scene : {"hard/environment-furnace/mirror.json", "furnace/scene-environment.json"}) {
         request.scene = testing::scene_path(scene);
-        const std::vector<double> values = pixel_mean(testing::render(request));
+        const std::vector<double> values = stats::channel_values(testing::render(request).image, 1);
         const stats::TestResult test = stats::one_sample_t_test(values, 1.0, stats::exercise_test_alpha);
-        double mean = 0.0;
-        for (const double v : values) mean += v / static_cast<double>(values.size());
+        const double mean = stats::estimate_mean(values).mean;
         INFO(scene << ": " << test.message);
         INFO((test.passed || mean > 1.0 ? ""
                                         : "likely mistake: emission found through a delta bounce (a mirror) weighted "

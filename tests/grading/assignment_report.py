@@ -28,6 +28,7 @@ sys.dont_write_bytecode = True
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import exercises  # noqa: E402
 import make_references  # noqa: E402
+import submission  # noqa: E402
 
 TEMPLATE = Path(__file__).resolve().parent / "report_template.html"
 
@@ -46,28 +47,18 @@ class AssignmentReport:
     grade: str              # "2/2 pass", "0/3 FAIL (wrong result): ..." or "not graded"
     verdict: str            # one sentence on the image
     folder: str             # relative to the report's root
-    relative_mse: float | None = None
-    solution_relative_mse: float | None = None
 
 
 def build_renderer(build_dir: Path, target: str, jobs: int) -> str:
     """Builds the chapter's renderer; '' when it built, else the first error."""
-    log = build_dir / f"grade-build-{target}.log"
-    result = subprocess.run(["cmake", "--build", str(build_dir), "--target", target, "--parallel", str(jobs)],
-                            capture_output=True, text=True)
-    log.write_text(result.stdout + result.stderr, encoding="utf-8")
-    if result.returncode == 0:
-        return ""
-    errors = [line for line in (result.stdout + result.stderr).splitlines() if "error" in line.lower()]
-    return (errors[0] if errors else f"the build of {target} failed") + f" (log: {log})"
+    built = submission.build_target(build_dir, target, jobs, f"grade-build-{target}.log")
+    return "" if built.ok else f"{built.error} (log: {built.log})"
 
 
-def brightness_sentence(mine: list[float] | None, solution: list[float], reference: list[float]) -> str:
+def brightness_sentence(mine: list[float], solution: list[float], reference: list[float]) -> str:
     """What the image's mean brightness says: a bias shows there even when noise hides it pixel by
     pixel. Judged against the solution's own deviation at the same samples (its noise), with a
     floor of 2 %."""
-    if mine is None:
-        return ""
     def luminance(c: list[float]) -> float:
         return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
     if luminance(reference) <= 0.0:
@@ -165,7 +156,7 @@ def make_one(assignment: exercises.Assignment, build_dir: Path, source: Path, re
         "comparison": "compare/report.html",
     }
     (folder / "index.html").write_text(fill(TEMPLATE.read_text(encoding="utf-8"), values), encoding="utf-8")
-    return AssignmentReport(assignment.name, assignment.title, grade, verdict, key, relmse, solution)
+    return AssignmentReport(assignment.name, assignment.title, grade, verdict, key)
 
 
 def write_index(report_root: Path, reports: list[AssignmentReport], student: str) -> None:

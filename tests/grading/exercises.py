@@ -79,7 +79,7 @@ class Region:
     @property
     def chapter(self) -> str:
         """The chapter the exercise belongs to, e.g. 'ch01'."""
-        return self.name.split("/", 1)[0]
+        return chapter_of(self.name)
 
     @property
     def location(self) -> str:
@@ -93,6 +93,11 @@ class MarkerError(Exception):
     def __init__(self, problems: list[str]):
         super().__init__("\n".join(problems))
         self.problems = problems
+
+
+def chapter_of(name: str) -> str:
+    """The chapter of an exercise or assignment name: 'ch01' for 'ch01/uniform-hemisphere'."""
+    return name.split("/", 1)[0]
 
 
 def is_chapter_name(text: str) -> bool:
@@ -282,7 +287,7 @@ class Assignment:
 
     @property
     def chapter(self) -> str:
-        return self.name.split("/", 1)[0]
+        return chapter_of(self.name)
 
     @property
     def is_composite(self) -> bool:
@@ -350,7 +355,7 @@ def check_assignments(root: Path, names: set[str], tests: dict[str, str]) -> lis
         for part in assignment.parts if assignment.is_composite else ():
             if part not in names:
                 problems.append(f"{where}: {assignment.name}'s part {part} is not an exercise")
-            elif part.split("/", 1)[0] != assignment.chapter:
+            elif chapter_of(part) != assignment.chapter:
                 problems.append(f"{where}: {assignment.name}'s part {part} belongs to another chapter")
     return problems
 

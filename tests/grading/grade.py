@@ -323,7 +323,7 @@ def build_rows(outcomes: dict[str, Outcome], region_names: list[str], default_po
     for name in sorted(names):
         worth = points.get(name, default_points)
         outcome = outcomes.get(name, Outcome("not run", "no test"))
-        chapter_name = name.split("/", 1)[0]
+        chapter_name = exercises.chapter_of(name)
         if outcome.status == "pass":
             rows.append(Row(name, chapter_name, worth, worth, "pass"))
         elif outcome.status == "fail":

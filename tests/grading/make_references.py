@@ -48,7 +48,7 @@ def reference_file(root: Path, name: str) -> Path:
 
 def renderer(build_dir: Path, name: str) -> Path:
     """The chapter's renderer in a build folder: chNN for chNN/..."""
-    path = build_dir / "chapters" / name.split("/", 1)[0]
+    path = build_dir / "chapters" / exercises.chapter_of(name)
     if not path.is_file():
         raise RuntimeError(f"{path} does not exist: build it first (cmake --build {build_dir} --target {path.name})")
     return path
@@ -169,7 +169,7 @@ def report_arguments(root: Path, report: dict) -> list[str]:
 def image_mean(path: Path) -> list[float]:
     """The mean of a PFM image, per channel."""
     width, height, pixels = read_pfm(path)
-    return [sum(p[c] for p in pixels) / (width * height) for c in range(3)]
+    return block_means(width, height, pixels, (1, 1))[0]
 
 
 def make_image(root: Path, build_dir: Path, assignment: exercises.Assignment, images: Path, threads: int) -> Path:

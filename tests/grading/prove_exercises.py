@@ -345,7 +345,7 @@ def isolate(proofs: dict[str, Proof], names: list[str], source: Path, work: Path
     for name in names:
         proof = proofs[name]
         if proof.parts:  # an assignment made of regions: its chapter's regions, its parts among them, stubbed
-            chapter = name.split("/", 1)[0]
+            chapter = exercises.chapter_of(name)
             print_step(f"isolating {name}: stubbing chapter {chapter}'s exercises alone")
             refresh_copy(source, work, chapter=chapter)
         else:

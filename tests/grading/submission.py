@@ -203,10 +203,15 @@ def configure(source: Path, build: Path, like: dict[str, str] | None = None) -> 
     return run_logged(command, build / "grade-configure.log")
 
 
+def build_target(build: Path, target: str, jobs: int, log_name: str) -> BuildResult:
+    """Build one target in Release; the log goes to BUILD/log_name."""
+    command = ["cmake", "--build", str(build), "--target", target, "--config", "Release", "--parallel", str(jobs)]
+    return run_logged(command, build / log_name)
+
+
 def build_grading_tests(build: Path, jobs: int) -> BuildResult:
     """Build the exercise_tests target; the log goes to BUILD/grade-build.log."""
-    command = ["cmake", "--build", str(build), "--target", TEST_TARGET, "--config", "Release", "--parallel", str(jobs)]
-    return run_logged(command, build / "grade-build.log")
+    return build_target(build, TEST_TARGET, jobs, "grade-build.log")
 
 
 def find_grading_tests(build: Path) -> Path | None:

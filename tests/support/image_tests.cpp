@@ -196,4 +196,11 @@ ImageTestResult per_pixel_rule_test(const Image& mean, const Image& variance, st
     return pixel_rule(render_side(mean, variance, samples), exact_side(known), pixel_alpha, rule_alpha);
 }
 
+std::vector<double> channel_values(const Image& image, int channel) {
+    std::vector<double> values;
+    values.reserve(image.pixel_count());
+    for (const Spectrum& p : image.pixels()) values.push_back(p[channel]);
+    return values;
+}
+
 }  // namespace freezeray::stats

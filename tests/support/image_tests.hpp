@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace freezeray::stats {
 
@@ -70,5 +71,9 @@ ImageTestResult per_pixel_rule_test(const Image& a_mean, const Image& a_variance
                                     double pixel_alpha, double rule_alpha);
 ImageTestResult per_pixel_rule_test(const Image& mean, const Image& variance, std::uint64_t samples,
                                     const Image& known, double pixel_alpha, double rule_alpha);
+
+// One channel (0 red, 1 green, 2 blue) of every pixel, in row order: the pixels as independent
+// estimates of one value, for a t-test of a scene whose exact answer is the same everywhere.
+std::vector<double> channel_values(const Image& image, int channel);
 
 }  // namespace freezeray::stats
