@@ -229,17 +229,19 @@ TEST_CASE("a cluster's bounds contain its lights' and its cone every direction o
     const ManyLights scene(64, false, 15);
     const BvhLightSampler sampler(scene.lights);
     const auto& nodes = sampler.nodes();
+    const auto& bounds = sampler.node_bounds();
+    REQUIRE(bounds.size() == nodes.size());
     // Every interior node's box holds its children's, and its power is theirs together.
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         if (nodes[i].is_leaf) continue;
         for (std::size_t child : {i + 1, static_cast<std::size_t>(nodes[i].second_child_or_light)}) {
             for (int axis = 0; axis < 3; ++axis) {
-                REQUIRE(nodes[i].bounds.box.min[axis] <= nodes[child].bounds.box.min[axis]);
-                REQUIRE(nodes[i].bounds.box.max[axis] >= nodes[child].bounds.box.max[axis]);
+                REQUIRE(bounds[i].box.min[axis] <= bounds[child].box.min[axis]);
+                REQUIRE(bounds[i].box.max[axis] >= bounds[child].box.max[axis]);
             }
         }
-        REQUIRE(nodes[i].bounds.phi ==
-                Approx(nodes[i + 1].bounds.phi + nodes[nodes[i].second_child_or_light].bounds.phi).epsilon(1e-6));
+        REQUIRE(bounds[i].phi == Approx(bounds[i + 1].phi + bounds[nodes[i].second_child_or_light].phi).epsilon(1e-6));
+        REQUIRE(nodes[i].cluster.phi == bounds[i].phi);
     }
     CHECK(nodes.size() == 2 * (64 + 8 + 4) - 1);  // every light but the dark one, in a binary tree
 }

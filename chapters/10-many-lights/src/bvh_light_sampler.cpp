@@ -42,15 +42,6 @@ double cluster_cost(const LightBounds& b, const Bounds3& node_box, int axis) {
 
 }  // namespace
 
-// BOOK(child-probabilities)
-std::array<float, 2> child_probabilities(const LightTreeNode& first, const LightTreeNode& second, const ShadingPoint& point) {
-    const double a = importance(first.bounds, point), b = importance(second.bounds, point);
-    if (a + b <= 0.0) return {-1.0f, -1.0f};
-    // In double: the importances may be as large as the largest float.
-    return {static_cast<float>(a / (a + b)), static_cast<float>(b / (a + b))};
-}
-// END BOOK
-
 BvhLightSampler::BvhLightSampler(const std::vector<std::unique_ptr<Light>>& lights) : lights_(lights) {
     const auto start = std::chrono::steady_clock::now();
     paths_.resize(lights.size());
@@ -74,12 +65,13 @@ BvhLightSampler::BvhLightSampler(const std::vector<std::unique_ptr<Light>>& ligh
     build_milliseconds_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void BvhLightSampler::build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t bits, int depth) {
+LightBounds BvhLightSampler::build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t bits, int depth) {
     max_depth_ = std::max(max_depth_, depth);
     if (end - begin == 1) {
-        nodes_.push_back({entries[begin].bounds, entries[begin].light, true});
+        nodes_.push_back({LightCluster(entries[begin].bounds), entries[begin].light, true});
+        node_bounds_.push_back(entries[begin].bounds);
         paths_[entries[begin].light] = {bits, depth};
-        return;
+        return entries[begin].bounds;
     }
     Bounds3 node_box, centres;
     for (std::size_t i = begin; i < end; ++i) {
@@ -137,10 +129,14 @@ void BvhLightSampler::build(std::vector<Entry>& entries, std::size_t begin, std:
     }
     const std::size_t index = nodes_.size();
     nodes_.push_back({});
-    build(entries, begin, middle, bits, depth + 1);
+    node_bounds_.emplace_back();
+    const LightBounds first = build(entries, begin, middle, bits, depth + 1);
     nodes_[index].second_child_or_light = static_cast<std::uint32_t>(nodes_.size());
-    build(entries, middle, end, bits | (std::uint64_t{1} << depth), depth + 1);
-    nodes_[index].bounds = bounds_union(nodes_[index + 1].bounds, nodes_[nodes_[index].second_child_or_light].bounds);
+    const LightBounds second = build(entries, middle, end, bits | (std::uint64_t{1} << depth), depth + 1);
+    const LightBounds bounds = bounds_union(first, second);
+    nodes_[index].cluster = LightCluster(bounds);
+    node_bounds_[index] = bounds;
+    return bounds;
 }
 
 // BOOK(bvh-sample)
@@ -168,7 +164,7 @@ std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, fl
         index = children[child];
     }
     // A tree of one light: its own importance was never looked at.
-    if (index == 0 && importance(nodes_[0].bounds, point) <= 0.0f) return std::nullopt;
+    if (index == 0 && importance(nodes_[0].cluster, point) <= 0.0f) return std::nullopt;
     return LightChoice{lights_[nodes_[index].second_child_or_light].get(), probability};
     // END EXERCISE
 }
@@ -192,7 +188,7 @@ float BvhLightSampler::probability(const ShadingPoint& point, const Light& light
         probability *= p[child];
         index = children[child];
     }
-    if (index == 0 && importance(nodes_[0].bounds, point) <= 0.0f) return 0.0f;
+    if (index == 0 && importance(nodes_[0].cluster, point) <= 0.0f) return 0.0f;
     return probability;
     // END EXERCISE
 }

@@ -22,13 +22,14 @@ float safe_acos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
 constexpr float ConeSlack = 1e-4f;
 
 // cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of a and b in [0, pi].
+// Written as selects of values computed either way, which compile to no branch.
 float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    if (cos_a > cos_b) return 1.0f;  // a < b: the difference is clamped to 0
-    return cos_a * cos_b + sin_a * sin_b;
+    const float difference = cos_a * cos_b + sin_a * sin_b;
+    return cos_a > cos_b ? 1.0f : difference;  // a < b: the difference is clamped to 0
 }
 float sin_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    if (cos_a > cos_b) return 0.0f;
-    return sin_a * cos_b - cos_a * sin_b;
+    const float difference = sin_a * cos_b - cos_a * sin_b;
+    return cos_a > cos_b ? 0.0f : difference;
 }
 
 // v turned by `angle` about the unit axis k (Rodrigues' formula).
@@ -101,57 +102,69 @@ LightBounds bounds_union(const LightBounds& a, const LightBounds& b) {
     return u;
 }
 
+LightCluster::LightCluster(const LightBounds& bounds)
+    : centre((bounds.box.min + bounds.box.max) * 0.5f),
+      radius_squared(glm::dot(bounds.box.diagonal() * 0.5f, bounds.box.diagonal() * 0.5f)),
+      w(bounds.w),
+      phi(bounds.phi),
+      cos_theta_o(bounds.cos_theta_o),
+      sin_theta_o(safe_sqrt(1.0f - bounds.cos_theta_o * bounds.cos_theta_o)),
+      cos_theta_e(bounds.cos_theta_e) {}
+
 // BOOK(light-importance)
-float importance(const LightBounds& bounds, const ShadingPoint& point) {
+float importance(const LightCluster& cluster, const ShadingPoint& point) {
     // EXERCISE(ch10/cluster-importance): the bound on what the cluster can send to the point, book chapter 10, "The importance of a cluster", as importance's comment in light_bounds.hpp states it; never 0 where some light of the cluster may reach the point
-    if (bounds.phi <= 0.0f) return 0.0f;
-    const Vec3 centre = (bounds.box.min + bounds.box.max) * 0.5f;
-    const Vec3 to_point = point.position - centre;
+    if (cluster.phi <= 0.0f) return 0.0f;
+    const Vec3 to_point = point.position - cluster.centre;
     const float distance_squared = glm::dot(to_point, to_point);
-    const Vec3 half_diagonal = bounds.box.diagonal() * 0.5f;
-    const float radius_squared = glm::dot(half_diagonal, half_diagonal);
     const float inverse_distance = distance_squared > 0.0f ? 1.0f / std::sqrt(distance_squared) : 0.0f;
 
     // theta_b: the half-angle of the box's bounding sphere seen from the point (the whole
     // sphere of directions from inside it: cos_b = -1).
-    float cos_b = -1.0f, sin_b = 0.0f;
-    if (distance_squared > radius_squared) {
-        const float sin_b_squared = radius_squared / distance_squared;
-        sin_b = std::sqrt(sin_b_squared);
-        cos_b = safe_sqrt(1.0f - sin_b_squared);
-    }
+    const bool outside = distance_squared > cluster.radius_squared;
+    const float sin_b_squared = outside ? cluster.radius_squared / distance_squared : 0.0f;
+    const float sin_b = std::sqrt(sin_b_squared);
+    const float cos_b = outside ? safe_sqrt(1.0f - sin_b_squared) : -1.0f;
 
     // cos theta': theta' is the smallest angle between an emitter's normal and a direction to the
     // point: theta_w from the cone's axis, less theta_o (the normals' spread), less theta_b (the
-    // cluster's extent), at least 0. Each step is skipped where it is already 0.
-    float cos_p = 1.0f;
-    if (bounds.cos_theta_o > -1.0f) {
-        const float cos_w = glm::dot(bounds.w, to_point) * inverse_distance;
-        if (cos_w < bounds.cos_theta_o) {  // theta_w > theta_o
-            const float sin_w = safe_sqrt(1.0f - cos_w * cos_w);
-            const float sin_o = safe_sqrt(1.0f - bounds.cos_theta_o * bounds.cos_theta_o);
-            const float cos_x = cos_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
-            const float sin_x = sin_sub_clamped(sin_w, cos_w, sin_o, bounds.cos_theta_o);
-            cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
-        }
-    }
+    // cluster's extent), at least 0. Computed whether or not a step is clamped, and chosen at the
+    // end: the walk meets both cases at random, and a mispredicted branch costs more than the
+    // arithmetic.
+    // sin_w from the squares, sqrt(d^2 - (w . d)^2) / d, so that its square root need not wait
+    // for cos_w.
+    const float w_dot = glm::dot(cluster.w, to_point);
+    const float cos_w = w_dot * inverse_distance;
+    const float sin_w = safe_sqrt(distance_squared - w_dot * w_dot) * inverse_distance;
+    const float cos_x = cos_sub_clamped(sin_w, cos_w, cluster.sin_theta_o, cluster.cos_theta_o);
+    const float sin_x = sin_sub_clamped(sin_w, cos_w, cluster.sin_theta_o, cluster.cos_theta_o);
+    const float cos_p = cluster.cos_theta_o > -1.0f ? cos_sub_clamped(sin_x, cos_x, sin_b, cos_b) : 1.0f;
     // Outside every emitter's cone by more than rounding: no light of the cluster reaches here.
-    if (cos_p < bounds.cos_theta_e - ConeSlack) return 0.0f;
+    if (cos_p < cluster.cos_theta_e - ConeSlack) return 0.0f;
 
-    float result = bounds.phi * std::max(cos_p, 0.0f) / std::max(distance_squared, radius_squared);
+    // phi / d^2 first: its division need not wait for the cosines.
+    float result = cluster.phi / std::max(distance_squared, cluster.radius_squared) * std::max(cos_p, 0.0f);
     if (point.normal != Vec3(0.0f)) {
         // The largest |cos| at the point's normal over the cluster; never 0, since the sampler
         // does not know whether the surface lets light through from behind or at grazing angles.
-        const float cos_i = std::abs(glm::dot(to_point, point.normal)) * inverse_distance;
-        if (cos_i < cos_b) {  // theta_i > theta_b
-            const float sin_i = safe_sqrt(1.0f - cos_i * cos_i);
-            result *= std::max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), ReceiverFloor);
-        }
+        const float n_dot = std::abs(glm::dot(to_point, point.normal));
+        const float cos_i = n_dot * inverse_distance;
+        const float sin_i = safe_sqrt(distance_squared - n_dot * n_dot) * inverse_distance;
+        result *= std::max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), ReceiverFloor);
     }
     // A cluster's emitter cosine may be 0 at the edge of its cone: keep it samplable there.
-    if (result == 0.0f) result = std::numeric_limits<float>::min();
-    return std::min(result, std::numeric_limits<float>::max());
+    return std::clamp(result, std::numeric_limits<float>::min(), std::numeric_limits<float>::max());
     // END EXERCISE
+}
+// END BOOK
+
+// BOOK(child-probabilities)
+std::array<float, 2> child_probabilities(const LightCluster& first, const LightCluster& second, const ShadingPoint& point) {
+    // Halved, so that their sum stays finite when both are as large as the largest float.
+    const float a = 0.5f * importance(first, point), b = 0.5f * importance(second, point);
+    const float sum = a + b;
+    if (!(sum > 0.0f)) return {-1.0f, -1.0f};
+    return {a / sum, b / sum};
 }
 // END BOOK
 

@@ -15,17 +15,18 @@
 
 namespace freezeray::ch10 {
 
-// One node: a leaf holds one light; an interior node's first child follows it, its second is at
-// `second_child`.
+// One node: the bounds of its lights, as the walk reads them; a leaf holds one light, an interior
+// node's first child follows it, its second is at `second_child_or_light`.
 struct LightTreeNode {
-    LightBounds bounds;
+    LightCluster cluster;
     std::uint32_t second_child_or_light = 0;
     bool is_leaf = false;
 };
 
-// The probabilities of going to each child of an interior node from `point`: in proportion to
-// the children's importance; {-1, -1} when neither can send light there.
-std::array<float, 2> child_probabilities(const LightTreeNode& first, const LightTreeNode& second, const ShadingPoint& point);
+// The probabilities of going to each child of an interior node from `point` (light_bounds.hpp).
+inline std::array<float, 2> child_probabilities(const LightTreeNode& first, const LightTreeNode& second, const ShadingPoint& point) {
+    return child_probabilities(first.cluster, second.cluster, point);
+}
 
 class BvhLightSampler final : public LightSampler {
 public:
@@ -42,6 +43,9 @@ public:
     std::vector<std::string> description() const override;
 
     const std::vector<LightTreeNode>& nodes() const { return nodes_; }
+    // The bounds each node's cluster was made from, by node (for tests and inspection; the walk
+    // reads only the clusters).
+    const std::vector<LightBounds>& node_bounds() const { return node_bounds_; }
     // Lights chosen beside the tree (environment and directional lights), each with probability
     // infinite_probability() / their count, wherever the point is.
     const std::vector<const Light*>& infinite_lights() const { return infinite_lights_; }
@@ -57,10 +61,12 @@ private:
         LightBounds bounds;
         std::uint32_t light;
     };
-    void build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t bits, int depth);
+    // Builds the subtree of entries [begin, end) and returns the bounds of all its lights.
+    LightBounds build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t bits, int depth);
 
     const std::vector<std::unique_ptr<Light>>& lights_;
     std::vector<LightTreeNode> nodes_;
+    std::vector<LightBounds> node_bounds_;
     std::vector<TreePath> paths_;  // by Light::index
     std::vector<const Light*> infinite_lights_;
     std::vector<bool> is_infinite_;  // by Light::index

@@ -8,6 +8,7 @@
 #include "freezeray/light_sampler.hpp"
 #include "freezeray/math.hpp"
 
+#include <array>
 #include <optional>
 
 namespace freezeray::ch10 {
@@ -47,6 +48,23 @@ std::optional<LightBounds> bounds_of(const Light& light);
 // The bounds of two clusters together.
 LightBounds bounds_union(const LightBounds& a, const LightBounds& b);
 
+// BOOK(light-cluster)
+// A cluster's bounds as importance() reads them: the centre and the squared radius of the box's
+// bounding sphere, and the sine of theta_o beside its cosine, computed once per node when the
+// tree is built rather than at every shading point.
+struct LightCluster {
+    Vec3 centre{0.0f};
+    float radius_squared = 0.0f;
+    Vec3 w{0.0f, 0.0f, 1.0f};
+    float phi = 0.0f;
+    float cos_theta_o = 1.0f, sin_theta_o = 0.0f;
+    float cos_theta_e = 1.0f;
+
+    LightCluster() = default;
+    explicit LightCluster(const LightBounds& bounds);
+};
+// END BOOK
+
 // The least factor importance() gives a point's normal: a light in the plane of the surface
 // keeps a chance (the sampler does not know what the surface's BSDF does at grazing angles).
 inline constexpr float ReceiverFloor = 1e-3f;
@@ -56,6 +74,11 @@ inline constexpr float ReceiverFloor = 1e-3f;
 // largest |cos| at the point's normal (when it has one), over the squared distance. It is 0 only
 // where no light of the cluster reaches the point at all; otherwise it is at least the smallest
 // positive float, so that every light that may shine on the point can be chosen there.
-float importance(const LightBounds& bounds, const ShadingPoint& point);
+float importance(const LightCluster& cluster, const ShadingPoint& point);
+inline float importance(const LightBounds& bounds, const ShadingPoint& point) { return importance(LightCluster(bounds), point); }
+
+// The probabilities of going to each of two clusters from `point`: in proportion to their
+// importance; {-1, -1} when neither can send light there.
+std::array<float, 2> child_probabilities(const LightCluster& first, const LightCluster& second, const ShadingPoint& point);
 
 }  // namespace freezeray::ch10
