@@ -20,6 +20,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -157,21 +158,19 @@ TEST_CASE("ch10/tree-path-probability", "[exercise]") {
 
 namespace {
 
-// The probability of reaching each leaf's light from the node `index`, by visiting every branch:
-// the children's probabilities from child_probabilities, multiplied from the root down as
-// sample()'s comment says; a branch where neither child sends light leaves its lights at 0.
+// The probability of reaching each light from the node `index`, by visiting every branch: the
+// children's probabilities from child_probabilities, multiplied from the root down as sample()'s
+// comment says; a branch where no child sends light leaves its lights at 0.
 void tree_probabilities(const BvhLightSampler& sampler, const ShadingPoint& point, std::uint32_t index, float probability,
                         std::vector<float>& out) {
-    const std::vector<LightTreeNode>& nodes = sampler.nodes();
-    const LightTreeNode& node = nodes[index];
-    if (node.is_leaf) {
-        out[node.second_child_or_light] = probability;
-        return;
-    }
-    const std::array<float, 2> p = child_probabilities(nodes[index + 1], nodes[node.second_child_or_light], point);
+    const LightTreeNode& node = sampler.nodes()[index];
+    const ChildProbabilities p = child_probabilities(node, point);
     if (p[0] < 0.0f) return;
-    tree_probabilities(sampler, point, index + 1, probability * p[0], out);
-    tree_probabilities(sampler, point, node.second_child_or_light, probability * p[1], out);
+    for (int i = 0; i < static_cast<int>(node.child_count); ++i) {
+        const float q = probability * p[static_cast<std::size_t>(i)];
+        if (node.child_is_light(i)) out[node.child_index(i)] = q;
+        else tree_probabilities(sampler, point, node.child_index(i), q, out);
+    }
 }
 
 }  // namespace
@@ -182,7 +181,10 @@ TEST_CASE("ch10/tree-walk", "[exercise]") {
     const std::vector<std::unique_ptr<Light>>& lights = scene->lights;
     const BvhLightSampler sampler(lights);
     REQUIRE(sampler.infinite_probability() == 0.5f);
-    REQUIRE(sampler.nodes().size() == 2 * 62 - 1);  // the 62 lights with power, one per leaf
+    int in_tree = 0;
+    for (const LightTreeNode& node : sampler.nodes())
+        for (int i = 0; i < static_cast<int>(node.child_count); ++i) in_tree += node.child_is_light(i) ? 1 : 0;
+    REQUIRE(in_tree == 62);  // the 62 lights with power, each once
     const float tree_share = 1.0f - sampler.infinite_probability();
     const ShadingPoint first{Vec3(1.0f, 4.0f, 1.0f), Vec3(0.0f, 1.0f, 0.0f)};
     sampler.sample(first, 0.75f);  // the walk itself first (in a student's copy, its stub speaks)

@@ -231,19 +231,43 @@ TEST_CASE("a cluster's bounds contain its lights' and its cone every direction o
     const auto& nodes = sampler.nodes();
     const auto& bounds = sampler.node_bounds();
     REQUIRE(bounds.size() == nodes.size());
-    // Every interior node's box holds its children's, and its power is theirs together.
+    // Every node's box holds its children's, and its power is theirs together; every node but
+    // the root is the child of exactly one node, after it; every light in the tree is the child
+    // of exactly one node; no node has more than LightTreeWidth children, and only a tree of one
+    // light has a node of fewer than two.
+    std::vector<int> parents(nodes.size(), 0), light_parents(scene.lights.size(), 0);
+    int leaves = 0;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
-        if (nodes[i].is_leaf) continue;
-        for (std::size_t child : {i + 1, static_cast<std::size_t>(nodes[i].second_child_or_light)}) {
-            for (int axis = 0; axis < 3; ++axis) {
-                REQUIRE(bounds[i].box.min[axis] <= bounds[child].box.min[axis]);
-                REQUIRE(bounds[i].box.max[axis] >= bounds[child].box.max[axis]);
+        REQUIRE(nodes[i].child_count >= 2);
+        REQUIRE(nodes[i].child_count <= static_cast<std::uint32_t>(LightTreeWidth));
+        double phi = 0.0;
+        for (int k = 0; k < static_cast<int>(nodes[i].child_count); ++k) {
+            LightBounds child_bounds;
+            if (nodes[i].child_is_light(k)) {
+                ++leaves;
+                ++light_parents[nodes[i].child_index(k)];
+                child_bounds = *bounds_of(*scene.lights[nodes[i].child_index(k)]);
+            } else {
+                const std::size_t child = nodes[i].child_index(k);
+                REQUIRE(child > i);
+                REQUIRE(child < nodes.size());
+                ++parents[child];
+                child_bounds = bounds[child];
             }
+            for (int axis = 0; axis < 3; ++axis) {
+                REQUIRE(bounds[i].box.min[axis] <= child_bounds.box.min[axis]);
+                REQUIRE(bounds[i].box.max[axis] >= child_bounds.box.max[axis]);
+            }
+            phi += child_bounds.phi;
+            REQUIRE(nodes[i].children.phi[k] == child_bounds.phi);
         }
-        REQUIRE(bounds[i].phi == Approx(bounds[i + 1].phi + bounds[nodes[i].second_child_or_light].phi).epsilon(1e-6));
-        REQUIRE(nodes[i].cluster.phi == bounds[i].phi);
+        for (int k = static_cast<int>(nodes[i].child_count); k < LightTreeWidth; ++k) REQUIRE(nodes[i].children.phi[k] == 0.0f);
+        REQUIRE(bounds[i].phi == Approx(phi).epsilon(1e-6));
     }
-    CHECK(nodes.size() == 2 * (64 + 8 + 4) - 1);  // every light but the dark one, in a binary tree
+    CHECK(parents[0] == 0);
+    for (std::size_t i = 1; i < nodes.size(); ++i) REQUIRE(parents[i] == 1);
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) REQUIRE(light_parents[i] == (bounds_of(*scene.lights[i])->phi > 0.0f ? 1 : 0));
+    CHECK(leaves == 64 + 8 + 4);  // every light but the dark one, one per leaf
 }
 
 TEST_CASE("the light BVH with no lights, one light, and only infinite lights", "[unit][ch10]") {

@@ -9,15 +9,17 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace freezeray::ch10 {
 
 namespace {
 
 constexpr int Buckets = 12;
-// Below this depth the build splits by cost; deeper, at the median, so that a path from the root
-// always fits the 64 bits of a TreePath.
+// Below this depth the build splits by cost; deeper, at the median, so that no tree is deeper
+// than MaxDepth (with at most 2^32 lights).
 constexpr int CostSplitDepth = 48;
+constexpr int MaxDepth = CostSplitDepth + 32;
 
 Vec3 centre(const Bounds3& b) { return (b.min + b.max) * 0.5f; }
 
@@ -44,7 +46,6 @@ double cluster_cost(const LightBounds& b, const Bounds3& node_box, int axis) {
 
 BvhLightSampler::BvhLightSampler(const std::vector<std::unique_ptr<Light>>& lights) : lights_(lights) {
     const auto start = std::chrono::steady_clock::now();
-    paths_.resize(lights.size());
     is_infinite_.assign(lights.size(), false);
     std::vector<Entry> entries;
     for (const auto& light : lights) {
@@ -58,20 +59,32 @@ BvhLightSampler::BvhLightSampler(const std::vector<std::unique_ptr<Light>>& ligh
             ++dark_lights_;  // sends no light: never chosen, and nothing is lost
         }
     }
-    if (!entries.empty()) build(entries, 0, entries.size(), 0, 0);
+    light_slots_.assign(lights.size(), Slot{NotInTree, 0});
+    if (!entries.empty()) {
+        if (entries.size() >= LightTreeNode::LightBit) throw std::length_error("light BVH: more than 2^31 lights");
+        std::vector<BinaryNode> binary;
+        binary.reserve(2 * entries.size() - 1);
+        const std::uint32_t root = build_binary(entries, 0, entries.size(), 0, binary);
+        nodes_.emplace_back();
+        node_bounds_.emplace_back();
+        node_slots_.push_back({NotInTree, 0});
+        gather(binary, root, 0, 0);
+    }
     // pbrt-v4's rule: the tree counts as one more infinite light, chosen as often as each of them.
     const auto infinite = static_cast<float>(infinite_lights_.size());
     infinite_probability_ = infinite > 0.0f ? infinite / (infinite + (nodes_.empty() ? 0.0f : 1.0f)) : 0.0f;
     build_milliseconds_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-LightBounds BvhLightSampler::build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t bits, int depth) {
-    max_depth_ = std::max(max_depth_, depth);
+std::uint32_t BvhLightSampler::build_binary(std::vector<Entry>& entries, std::size_t begin, std::size_t end, int depth,
+                                            std::vector<BinaryNode>& binary) {
     if (end - begin == 1) {
-        nodes_.push_back({LightCluster(entries[begin].bounds), entries[begin].light, true});
-        node_bounds_.push_back(entries[begin].bounds);
-        paths_[entries[begin].light] = {bits, depth};
-        return entries[begin].bounds;
+        BinaryNode leaf;
+        leaf.bounds = entries[begin].bounds;
+        leaf.light = entries[begin].light;
+        leaf.is_leaf = true;
+        binary.push_back(leaf);
+        return static_cast<std::uint32_t>(binary.size() - 1);
     }
     Bounds3 node_box, centres;
     for (std::size_t i = begin; i < end; ++i) {
@@ -127,17 +140,75 @@ LightBounds BvhLightSampler::build(std::vector<Entry>& entries, std::size_t begi
                              return ca != cb ? ca < cb : a.light < b.light;
                          });
     }
-    const std::size_t index = nodes_.size();
-    nodes_.push_back({});
-    node_bounds_.emplace_back();
-    const LightBounds first = build(entries, begin, middle, bits, depth + 1);
-    nodes_[index].second_child_or_light = static_cast<std::uint32_t>(nodes_.size());
-    const LightBounds second = build(entries, middle, end, bits | (std::uint64_t{1} << depth), depth + 1);
-    const LightBounds bounds = bounds_union(first, second);
-    nodes_[index].cluster = LightCluster(bounds);
-    node_bounds_[index] = bounds;
-    return bounds;
+    BinaryNode node;
+    node.children[0] = build_binary(entries, begin, middle, depth + 1, binary);
+    node.children[1] = build_binary(entries, middle, end, depth + 1, binary);
+    node.bounds = bounds_union(binary[node.children[0]].bounds, binary[node.children[1]].bounds);
+    node.lights = binary[node.children[0]].lights + binary[node.children[1]].lights;
+    binary.push_back(node);
+    return static_cast<std::uint32_t>(binary.size() - 1);
 }
+
+// BOOK(light-tree-gather)
+void BvhLightSampler::gather(const std::vector<BinaryNode>& binary, std::uint32_t b, std::uint32_t at, int depth) {
+    node_bounds_[at] = binary[b].bounds;
+    // Its two children, then the one among them with the most lights replaced by its own two (in
+    // place, so that the children keep the binary tree's order), until there are enough: the
+    // largest subtrees are flattened first, so that no light is left deep down.
+    std::uint32_t group[LightTreeWidth] = {b};
+    int count = 1;
+    if (!binary[b].is_leaf) {
+        group[0] = binary[b].children[0];
+        group[1] = binary[b].children[1];
+        count = 2;
+    }
+    while (count < LightTreeWidth) {
+        int open = -1;
+        for (int i = 0; i < count; ++i)
+            if (!binary[group[i]].is_leaf && (open < 0 || binary[group[i]].lights > binary[group[open]].lights)) open = i;
+        if (open < 0) break;  // only leaves
+        const BinaryNode& opened = binary[group[open]];
+        std::copy_backward(group + open + 1, group + count, group + count + 1);
+        group[open] = opened.children[0];
+        group[open + 1] = opened.children[1];
+        ++count;
+    }
+    nodes_[at].child_count = static_cast<std::uint32_t>(count);
+    for (int i = 0; i < count; ++i) {
+        const BinaryNode& child = binary[group[i]];
+        nodes_[at].children.set(i, child.bounds);
+        if (child.is_leaf) {
+            nodes_[at].child[i] = child.light | LightTreeNode::LightBit;
+            light_slots_[child.light] = {at, static_cast<std::uint32_t>(i)};
+            max_depth_ = std::max(max_depth_, depth + 1);
+            continue;
+        }
+        const auto index = static_cast<std::uint32_t>(nodes_.size());
+        nodes_[at].child[i] = index;
+        nodes_.emplace_back();
+        node_bounds_.emplace_back();
+        node_slots_.push_back({at, static_cast<std::uint32_t>(i)});
+        gather(binary, group[i], index, depth + 1);
+    }
+}
+// END BOOK
+
+// BOOK(child-probabilities)
+ChildProbabilities child_probabilities(const LightTreeNode& node, const ShadingPoint& point) {
+    // Each importance divided by the width, so that their sum stays finite when every one is
+    // the largest float.
+    const Lanes weights = importance(node.children, point) * (1.0f / LightTreeWidth);
+    const float sum = (weights[0] + weights[1]) + (weights[2] + weights[3]);
+    ChildProbabilities p;
+    if (!(sum > 0.0f)) {
+        p.fill(-1.0f);
+        return p;
+    }
+    const Lanes shares = weights / sum;
+    for (int i = 0; i < LightTreeWidth; ++i) p[static_cast<std::size_t>(i)] = shares[i];
+    return p;
+}
+// END BOOK
 
 // BOOK(bvh-sample)
 std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, float u) const {
@@ -146,49 +217,53 @@ std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, fl
         const std::size_t i = std::min(static_cast<std::size_t>(u / infinite_probability_ * static_cast<float>(n)), n - 1);
         return LightChoice{infinite_lights_[i], infinite_probability_ / static_cast<float>(n)};
     }
-    // EXERCISE(ch10/tree-walk): the walk of book chapter 10, "The walk and its probability", as sample's comment in bvh_light_sampler.hpp states it: u rescaled to the tree's share, one child at each interior node in proportion to child_probabilities, u reused, the probability multiplied from the root down; nothing where no child can send light, and a tree of one light chosen only where it can
+    // EXERCISE(ch10/tree-walk): the walk of book chapter 10, "The walk and its probability", as sample's comment in bvh_light_sampler.hpp states it: u rescaled to the tree's share, at each node the child whose share of [0, 1) holds u (child_probabilities laid end to end), u reused, the probability multiplied from the root down; nothing where no child can send light, and a tree of one light chosen only where it can
     if (nodes_.empty()) return std::nullopt;
     u = std::min((u - infinite_probability_) / (1.0f - infinite_probability_), OneMinusEpsilon);
     float probability = 1.0f - infinite_probability_;
     std::uint32_t index = 0;
-    while (!nodes_[index].is_leaf) {
-        // Down to one child, chosen in proportion to its importance; u is reused, rescaled.
+    for (;;) {
+        // Down to the child whose share of [0, 1) holds u; u is reused, rescaled within it.
         const LightTreeNode& node = nodes_[index];
-        const std::uint32_t children[2] = {index + 1, node.second_child_or_light};
-        const std::array<float, 2> p = child_probabilities(nodes_[children[0]], nodes_[children[1]], point);
+        const ChildProbabilities p = child_probabilities(node, point);
         if (p[0] < 0.0f) return std::nullopt;  // no light below sends light here
-        const int child = u < p[0] ? 0 : 1;
-        u = child == 0 ? u / p[0] : (u - p[0]) / p[1];
-        u = std::min(u, OneMinusEpsilon);
-        probability *= p[child];
-        index = children[child];
+        int child = 0;
+        float share_start = 0.0f, share_end = 0.0f;
+        for (int i = 0; i < static_cast<int>(node.child_count); ++i) {
+            if (p[static_cast<std::size_t>(i)] == 0.0f) continue;  // no share: never taken
+            child = i;
+            share_start = share_end;
+            share_end += p[static_cast<std::size_t>(i)];
+            if (u < share_end) break;
+        }
+        const float p_child = p[static_cast<std::size_t>(child)];
+        u = std::min((u - share_start) / p_child, OneMinusEpsilon);
+        probability *= p_child;
+        if (node.child_is_light(child)) return LightChoice{lights_[node.child_index(child)].get(), probability};
+        index = node.child_index(child);
     }
-    // A tree of one light: its own importance was never looked at.
-    if (index == 0 && importance(nodes_[0].cluster, point) <= 0.0f) return std::nullopt;
-    return LightChoice{lights_[nodes_[index].second_child_or_light].get(), probability};
     // END EXERCISE
 }
 // END BOOK
 
 // BOOK(bvh-probability)
 float BvhLightSampler::probability(const ShadingPoint& point, const Light& light) const {
-    // EXERCISE(ch10/tree-path-probability): the probability that sample() chooses `light` at `point`, as book chapter 10, "The walk and its probability", derives it: for a light beside the tree its share of infinite_probability_; for one in the tree, the walk along its recorded path (paths_) multiplying the probabilities of the children taken; 0 where sample() could never reach it
-    if (light.index >= paths_.size()) return 0.0f;
+    // EXERCISE(ch10/tree-path-probability): the probability that sample() chooses `light` at `point`, as book chapter 10, "The walk and its probability", derives it: for a light beside the tree its share of infinite_probability_; for one in the tree, the walk from the root down to its leaf (light_slots_, and node_slots_ to find the way) multiplying the probabilities of the children taken, in sample()'s order; 0 where sample() could never reach it
+    if (light.index >= light_slots_.size()) return 0.0f;
     if (is_infinite_[light.index]) return infinite_probability_ / static_cast<float>(infinite_lights_.size());
-    const TreePath& path = paths_[light.index];
-    if (path.depth < 0) return 0.0f;
+    if (light_slots_[light.index].node == NotInTree) return 0.0f;
+    // The slots on the way from the root to the light, found from the light up.
+    Slot path[MaxDepth + 1];
+    int depth = 0;
+    for (Slot slot = light_slots_[light.index]; slot.node != NotInTree; slot = node_slots_[slot.node]) path[depth++] = slot;
+    // Down again, multiplying the same probabilities in the same order as sample().
     float probability = 1.0f - infinite_probability_;
-    std::uint32_t index = 0;
-    for (int depth = 0; depth < path.depth; ++depth) {
-        const LightTreeNode& node = nodes_[index];
-        const std::uint32_t children[2] = {index + 1, node.second_child_or_light};
-        const std::array<float, 2> p = child_probabilities(nodes_[children[0]], nodes_[children[1]], point);
+    while (depth > 0) {
+        const Slot& slot = path[--depth];
+        const ChildProbabilities p = child_probabilities(nodes_[slot.node], point);
         if (p[0] < 0.0f) return 0.0f;
-        const int child = static_cast<int>((path.bits >> depth) & 1u);
-        probability *= p[child];
-        index = children[child];
+        probability *= p[slot.lane];
     }
-    if (index == 0 && importance(nodes_[0].cluster, point) <= 0.0f) return 0.0f;
     return probability;
     // END EXERCISE
 }
@@ -197,9 +272,10 @@ float BvhLightSampler::probability(const ShadingPoint& point, const Light& light
 std::vector<std::string> BvhLightSampler::description() const {
     char line[256];
     std::vector<std::string> lines;
-    const std::size_t in_tree = (nodes_.size() + 1) / 2;
-    std::snprintf(line, sizeof line, "tree: %zu lights, %zu nodes, depth %d, %.1f KiB, built in %.2f ms", in_tree, nodes_.size(),
-                  max_depth_, static_cast<double>(nodes_.size() * sizeof(LightTreeNode)) / 1024.0, build_milliseconds_);
+    const auto in_tree = static_cast<std::size_t>(std::count_if(light_slots_.begin(), light_slots_.end(), [](const Slot& s) { return s.node != NotInTree; }));
+    std::snprintf(line, sizeof line, "tree: %zu lights, %zu nodes of up to %d children, depth %d, %.1f KiB, built in %.2f ms", in_tree,
+                  nodes_.size(), LightTreeWidth, max_depth_, static_cast<double>(nodes_.size() * sizeof(LightTreeNode)) / 1024.0,
+                  build_milliseconds_);
     lines.emplace_back(line);
     if (!infinite_lights_.empty()) {
         std::snprintf(line, sizeof line, "beside the tree: %zu environment or directional lights, chosen with probability %.3g",

@@ -15,6 +15,7 @@ namespace freezeray::ch10 {
 namespace {
 
 float safe_sqrt(float x) { return std::sqrt(std::max(x, 0.0f)); }
+Lanes safe_sqrt(Lanes x) { return sqrt(max(x, splat(0.0f))); }
 float safe_acos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
 
 // Cones are widened by this angle wherever they are computed, so that rounding never leaves a
@@ -22,14 +23,11 @@ float safe_acos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
 constexpr float ConeSlack = 1e-4f;
 
 // cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of a and b in [0, pi].
-// Written as selects of values computed either way, which compile to no branch.
-float cos_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    const float difference = cos_a * cos_b + sin_a * sin_b;
-    return cos_a > cos_b ? 1.0f : difference;  // a < b: the difference is clamped to 0
+Lanes cos_sub_clamped(Lanes sin_a, Lanes cos_a, Lanes sin_b, Lanes cos_b) {
+    return select(cos_a > cos_b, splat(1.0f), cos_a * cos_b + sin_a * sin_b);  // a < b: the difference is clamped to 0
 }
-float sin_sub_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-    const float difference = sin_a * cos_b - cos_a * sin_b;
-    return cos_a > cos_b ? 0.0f : difference;
+Lanes sin_sub_clamped(Lanes sin_a, Lanes cos_a, Lanes sin_b, Lanes cos_b) {
+    return select(cos_a > cos_b, splat(0.0f), sin_a * cos_b - cos_a * sin_b);
 }
 
 // v turned by `angle` about the unit axis k (Rodrigues' formula).
@@ -102,70 +100,75 @@ LightBounds bounds_union(const LightBounds& a, const LightBounds& b) {
     return u;
 }
 
-LightCluster::LightCluster(const LightBounds& bounds)
-    : centre((bounds.box.min + bounds.box.max) * 0.5f),
-      radius_squared(glm::dot(bounds.box.diagonal() * 0.5f, bounds.box.diagonal() * 0.5f)),
-      w(bounds.w),
-      phi(bounds.phi),
-      cos_theta_o(bounds.cos_theta_o),
-      sin_theta_o(safe_sqrt(1.0f - bounds.cos_theta_o * bounds.cos_theta_o)),
-      cos_theta_e(bounds.cos_theta_e) {}
+void LightClusterGroup::set(int lane, const LightBounds& bounds) {
+    const Vec3 centre = (bounds.box.min + bounds.box.max) * 0.5f;
+    const Vec3 half_diagonal = bounds.box.diagonal() * 0.5f;
+    const float r_squared = glm::dot(half_diagonal, half_diagonal);
+    centre_x[lane] = centre.x;
+    centre_y[lane] = centre.y;
+    centre_z[lane] = centre.z;
+    radius_squared[lane] = r_squared;
+    radius[lane] = std::sqrt(r_squared);
+    inverse_radius_squared[lane] = 1.0f / r_squared;
+    w_x[lane] = bounds.w.x;
+    w_y[lane] = bounds.w.y;
+    w_z[lane] = bounds.w.z;
+    cos_theta_o[lane] = bounds.cos_theta_o;
+    sin_theta_o[lane] = safe_sqrt(1.0f - bounds.cos_theta_o * bounds.cos_theta_o);
+    cos_theta_e[lane] = bounds.cos_theta_e;
+    phi[lane] = bounds.phi;
+}
 
 // BOOK(light-importance)
-float importance(const LightCluster& cluster, const ShadingPoint& point) {
-    // EXERCISE(ch10/cluster-importance): the bound on what the cluster can send to the point, book chapter 10, "The importance of a cluster", as importance's comment in light_bounds.hpp states it; never 0 where some light of the cluster may reach the point
-    if (cluster.phi <= 0.0f) return 0.0f;
-    const Vec3 to_point = point.position - cluster.centre;
-    const float distance_squared = glm::dot(to_point, to_point);
-    const float inverse_distance = distance_squared > 0.0f ? 1.0f / std::sqrt(distance_squared) : 0.0f;
+Lanes importance(const LightClusterGroup& c, const ShadingPoint& point) {
+    // EXERCISE(ch10/cluster-importance): the bound on what each cluster of the group can send to the point, book chapter 10, "The importance of a cluster", as importance's comment in light_bounds.hpp states it, lane by lane; never 0 where some light of a cluster may reach the point, 0 in a lane without a cluster
+    const Lanes dx = point.position.x - c.centre_x, dy = point.position.y - c.centre_y, dz = point.position.z - c.centre_z;
+    const Lanes distance_squared = dx * dx + dy * dy + dz * dz;
+    const Lanes distance = sqrt(distance_squared);
+    const Lanes inverse_distance = select(distance > 0.0f, 1.0f / distance, splat(0.0f));
 
     // theta_b: the half-angle of the box's bounding sphere seen from the point (the whole
-    // sphere of directions from inside it: cos_b = -1).
-    const bool outside = distance_squared > cluster.radius_squared;
-    const float sin_b_squared = outside ? cluster.radius_squared / distance_squared : 0.0f;
-    const float sin_b = std::sqrt(sin_b_squared);
-    const float cos_b = outside ? safe_sqrt(1.0f - sin_b_squared) : -1.0f;
+    // sphere of directions from inside it: cos_b = -1). Its sine and cosine, like the others
+    // below, are lengths times 1 / d: one division for all.
+    const LaneMask outside = distance_squared > c.radius_squared;
+    const Lanes sin_b = select(outside, c.radius * inverse_distance, splat(0.0f));
+    const Lanes cos_b = select(outside, safe_sqrt(distance_squared - c.radius_squared) * inverse_distance, splat(-1.0f));
 
     // cos theta': theta' is the smallest angle between an emitter's normal and a direction to the
     // point: theta_w from the cone's axis, less theta_o (the normals' spread), less theta_b (the
-    // cluster's extent), at least 0. Computed whether or not a step is clamped, and chosen at the
-    // end: the walk meets both cases at random, and a mispredicted branch costs more than the
-    // arithmetic.
-    // sin_w from the squares, sqrt(d^2 - (w . d)^2) / d, so that its square root need not wait
-    // for cos_w.
-    const float w_dot = glm::dot(cluster.w, to_point);
-    const float cos_w = w_dot * inverse_distance;
-    const float sin_w = safe_sqrt(distance_squared - w_dot * w_dot) * inverse_distance;
-    const float cos_x = cos_sub_clamped(sin_w, cos_w, cluster.sin_theta_o, cluster.cos_theta_o);
-    const float sin_x = sin_sub_clamped(sin_w, cos_w, cluster.sin_theta_o, cluster.cos_theta_o);
-    const float cos_p = cluster.cos_theta_o > -1.0f ? cos_sub_clamped(sin_x, cos_x, sin_b, cos_b) : 1.0f;
+    // cluster's extent), at least 0. Each step is computed in every lane, clamped or not, and
+    // the clamps are selects.
+    const Lanes w_dot = c.w_x * dx + c.w_y * dy + c.w_z * dz;
+    const Lanes cos_w = w_dot * inverse_distance;
+    const Lanes sin_w = safe_sqrt(distance_squared - w_dot * w_dot) * inverse_distance;
+    const Lanes cos_x = cos_sub_clamped(sin_w, cos_w, c.sin_theta_o, c.cos_theta_o);
+    const Lanes sin_x = sin_sub_clamped(sin_w, cos_w, c.sin_theta_o, c.cos_theta_o);
+    const Lanes cos_p = select(c.cos_theta_o > -1.0f, cos_sub_clamped(sin_x, cos_x, sin_b, cos_b), splat(1.0f));
     // Outside every emitter's cone by more than rounding: no light of the cluster reaches here.
-    if (cos_p < cluster.cos_theta_e - ConeSlack) return 0.0f;
+    const LaneMask reaches = (cos_p >= c.cos_theta_e - ConeSlack) & (c.phi > 0.0f);
 
-    // phi / d^2 first: its division need not wait for the cosines.
-    float result = cluster.phi / std::max(distance_squared, cluster.radius_squared) * std::max(cos_p, 0.0f);
+    // phi / d^2, with d at least the radius (a point inside gets phi / r^2).
+    const Lanes inverse_squared = select(outside, inverse_distance * inverse_distance, c.inverse_radius_squared);
+    Lanes result = c.phi * inverse_squared * max(cos_p, splat(0.0f));
     if (point.normal != Vec3(0.0f)) {
         // The largest |cos| at the point's normal over the cluster; never 0, since the sampler
         // does not know whether the surface lets light through from behind or at grazing angles.
-        const float n_dot = std::abs(glm::dot(to_point, point.normal));
-        const float cos_i = n_dot * inverse_distance;
-        const float sin_i = safe_sqrt(distance_squared - n_dot * n_dot) * inverse_distance;
-        result *= std::max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), ReceiverFloor);
+        const Lanes n_dot = point.normal.x * dx + point.normal.y * dy + point.normal.z * dz;
+        const Lanes cos_i = max(n_dot, -n_dot) * inverse_distance;
+        const Lanes sin_i = safe_sqrt(distance_squared - n_dot * n_dot) * inverse_distance;
+        result *= max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), splat(ReceiverFloor));
     }
     // A cluster's emitter cosine may be 0 at the edge of its cone: keep it samplable there.
-    return std::clamp(result, std::numeric_limits<float>::min(), std::numeric_limits<float>::max());
+    result = min(max(result, splat(std::numeric_limits<float>::min())), splat(std::numeric_limits<float>::max()));
+    return select(reaches, result, splat(0.0f));
     // END EXERCISE
 }
 // END BOOK
 
-// BOOK(child-probabilities)
-std::array<float, 2> child_probabilities(const LightCluster& first, const LightCluster& second, const ShadingPoint& point) {
-    // Halved, so that their sum stays finite when both are as large as the largest float.
-    const float a = 0.5f * importance(first, point), b = 0.5f * importance(second, point);
-    const float sum = a + b;
-    if (!(sum > 0.0f)) return {-1.0f, -1.0f};
-    return {a / sum, b / sum};
+float importance(const LightBounds& bounds, const ShadingPoint& point) {
+    LightClusterGroup group;
+    group.set(0, bounds);
+    return importance(group, point)[0];
 }
-// END BOOK
 
 }  // namespace freezeray::ch10

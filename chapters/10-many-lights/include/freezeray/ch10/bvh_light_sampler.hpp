@@ -15,36 +15,50 @@
 
 namespace freezeray::ch10 {
 
-// One node: the bounds of its lights, as the walk reads them; a leaf holds one light, an interior
-// node's first child follows it, its second is at `second_child_or_light`.
-struct LightTreeNode {
-    LightCluster cluster;
-    std::uint32_t second_child_or_light = 0;
-    bool is_leaf = false;
-};
+// BOOK(light-tree-node)
+// The most children a node has: one per lane, so that their importances are computed at once.
+// The build makes a binary tree and then gathers each node's descendants up to this many into
+// one node (book chapter 10, "A wider tree").
+inline constexpr int LightTreeWidth = LaneCount;
 
-// The probabilities of going to each child of an interior node from `point` (light_bounds.hpp).
-inline std::array<float, 2> child_probabilities(const LightTreeNode& first, const LightTreeNode& second, const ShadingPoint& point) {
-    return child_probabilities(first.cluster, second.cluster, point);
-}
+// One node: the bounds of its children, lane by lane, and what they are: child[i] is the index of
+// a node, or of a light (Light::index) with LightBit set. Lanes from child_count on are empty.
+struct LightTreeNode {
+    static constexpr std::uint32_t LightBit = 0x80000000u;
+
+    LightClusterGroup children;
+    std::uint32_t child[LightTreeWidth] = {};
+    std::uint32_t child_count = 0;
+
+    bool child_is_light(int i) const { return (child[i] & LightBit) != 0; }
+    std::uint32_t child_index(int i) const { return child[i] & ~LightBit; }
+};
+// END BOOK
+
+// The probabilities of going to each child of a node from `point`: in proportion to their
+// importance, 0 in empty lanes; all -1 when no child can send light there.
+using ChildProbabilities = std::array<float, LightTreeWidth>;
+ChildProbabilities child_probabilities(const LightTreeNode& node, const ShadingPoint& point);
 
 class BvhLightSampler final : public LightSampler {
 public:
     explicit BvhLightSampler(const std::vector<std::unique_ptr<Light>>& lights);
 
     // A light beside the tree with probability infinite_probability(); otherwise u, rescaled to
-    // [0, 1), walks the tree from the root: at each interior node it goes to one child with the
-    // probabilities of child_probabilities, u rescaled to [0, 1) again within the child's share,
-    // and the choice's probability is 1 - infinite_probability() times the probabilities of the
-    // children taken, multiplied from the root down (so that probability() gives the same float).
-    // Nothing where neither child of a node can send light to the point.
+    // [0, 1), walks the tree from the root: at each node it goes to the child whose
+    // share of [0, 1) holds u, the shares being the probabilities of child_probabilities laid end
+    // to end in the children's order (a child of probability 0 has none; a u that rounding leaves
+    // past them all goes to the last child that has one), u rescaled to [0, 1) again within that
+    // share; the choice's probability is 1 - infinite_probability() times the probabilities of
+    // the children taken, multiplied from the root down (so that probability() gives the same
+    // float). Nothing where no child of a node can send light to the point.
     std::optional<LightChoice> sample(const ShadingPoint& point, float u) const override;
     float probability(const ShadingPoint& point, const Light& light) const override;
     std::vector<std::string> description() const override;
 
     const std::vector<LightTreeNode>& nodes() const { return nodes_; }
-    // The bounds each node's cluster was made from, by node (for tests and inspection; the walk
-    // reads only the clusters).
+    // The bounds of all the lights below each node, by node (for tests and inspection; the walk
+    // reads only the children's bounds).
     const std::vector<LightBounds>& node_bounds() const { return node_bounds_; }
     // Lights chosen beside the tree (environment and directional lights), each with probability
     // infinite_probability() / their count, wherever the point is.
@@ -52,22 +66,37 @@ public:
     float infinite_probability() const { return infinite_probability_; }
 
 private:
-    // Where a light sits in the tree: the choices (bit d: second child at depth d) from the root.
-    struct TreePath {
-        std::uint64_t bits = 0;
-        int depth = -1;  // -1: not in the tree (beside it, or sending no light)
-    };
     struct Entry {
         LightBounds bounds;
         std::uint32_t light;
     };
-    // Builds the subtree of entries [begin, end) and returns the bounds of all its lights.
-    LightBounds build(std::vector<Entry>& entries, std::size_t begin, std::size_t end, std::uint64_t bits, int depth);
+    static constexpr std::uint32_t NotInTree = 0xffffffffu;
+    // A node of the binary tree the build makes first.
+    struct BinaryNode {
+        LightBounds bounds;
+        std::uint32_t children[2] = {0, 0};
+        std::uint32_t light = 0;
+        std::uint32_t lights = 1;  // in its subtree
+        bool is_leaf = false;
+    };
+    // Builds the binary subtree of entries [begin, end) into `binary`; returns its root's index.
+    std::uint32_t build_binary(std::vector<Entry>& entries, std::size_t begin, std::size_t end, int depth,
+                               std::vector<BinaryNode>& binary);
+    // Writes binary node `b` as nodes_[at] (a leaf as a node of one child, for a tree of one
+    // light): its children are its descendants, opened from the one with the most lights down
+    // until there are LightTreeWidth of them (or only leaves).
+    void gather(const std::vector<BinaryNode>& binary, std::uint32_t b, std::uint32_t at, int depth);
+
+    // Where a node or a light hangs in the tree: its parent node and the lane it has there.
+    struct Slot {
+        std::uint32_t node, lane;
+    };
 
     const std::vector<std::unique_ptr<Light>>& lights_;
     std::vector<LightTreeNode> nodes_;
     std::vector<LightBounds> node_bounds_;
-    std::vector<TreePath> paths_;  // by Light::index
+    std::vector<Slot> node_slots_;   // by node; the root's node is NotInTree
+    std::vector<Slot> light_slots_;  // by Light::index; NotInTree for a light not in the tree
     std::vector<const Light*> infinite_lights_;
     std::vector<bool> is_infinite_;  // by Light::index
     float infinite_probability_ = 0.0f;

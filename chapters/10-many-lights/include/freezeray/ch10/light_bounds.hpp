@@ -4,11 +4,11 @@
 // "Physically Based Rendering", 4th edition, 2023, section 12.6.3).
 #pragma once
 
+#include "freezeray/ch10/lanes.hpp"
 #include "freezeray/light.hpp"
 #include "freezeray/light_sampler.hpp"
 #include "freezeray/math.hpp"
 
-#include <array>
 #include <optional>
 
 namespace freezeray::ch10 {
@@ -48,20 +48,20 @@ std::optional<LightBounds> bounds_of(const Light& light);
 // The bounds of two clusters together.
 LightBounds bounds_union(const LightBounds& a, const LightBounds& b);
 
-// BOOK(light-cluster)
-// A cluster's bounds as importance() reads them: the centre and the squared radius of the box's
-// bounding sphere, and the sine of theta_o beside its cosine, computed once per node when the
+// BOOK(light-cluster-group)
+// The bounds of up to four clusters as importance() reads them, one cluster per lane (structure
+// of arrays): the centre and radius of each box's bounding sphere (also squared, and 1 / its
+// square: infinite for a point), the cone's axis w, the cosine and sine of theta_o, the cosine of
+// theta_e, and phi, which is 0 in a lane that holds no cluster. Computed once per node when the
 // tree is built rather than at every shading point.
-struct LightCluster {
-    Vec3 centre{0.0f};
-    float radius_squared = 0.0f;
-    Vec3 w{0.0f, 0.0f, 1.0f};
-    float phi = 0.0f;
-    float cos_theta_o = 1.0f, sin_theta_o = 0.0f;
-    float cos_theta_e = 1.0f;
+struct LightClusterGroup {
+    Lanes centre_x{}, centre_y{}, centre_z{};
+    Lanes radius{}, radius_squared{}, inverse_radius_squared{};
+    Lanes w_x{}, w_y{}, w_z{};
+    Lanes cos_theta_o{}, sin_theta_o{}, cos_theta_e{};
+    Lanes phi{};
 
-    LightCluster() = default;
-    explicit LightCluster(const LightBounds& bounds);
+    void set(int lane, const LightBounds& bounds);
 };
 // END BOOK
 
@@ -69,16 +69,15 @@ struct LightCluster {
 // keeps a chance (the sampler does not know what the surface's BSDF does at grazing angles).
 inline constexpr float ReceiverFloor = 1e-3f;
 
-// How much light the cluster can send to `point` at most, up to a constant factor common to
+// How much light each cluster can send to `point` at most, up to a constant factor common to
 // every cluster: phi times the largest cosine at the emitters towards the point, times the
 // largest |cos| at the point's normal (when it has one), over the squared distance. It is 0 only
-// where no light of the cluster reaches the point at all; otherwise it is at least the smallest
-// positive float, so that every light that may shine on the point can be chosen there.
-float importance(const LightCluster& cluster, const ShadingPoint& point);
-inline float importance(const LightBounds& bounds, const ShadingPoint& point) { return importance(LightCluster(bounds), point); }
+// where no light of the cluster reaches the point at all (and in a lane without a cluster);
+// otherwise it is at least the smallest positive float, so that every light that may shine on
+// the point can be chosen there.
+Lanes importance(const LightClusterGroup& clusters, const ShadingPoint& point);
 
-// The probabilities of going to each of two clusters from `point`: in proportion to their
-// importance; {-1, -1} when neither can send light there.
-std::array<float, 2> child_probabilities(const LightCluster& first, const LightCluster& second, const ShadingPoint& point);
+// The importance of one cluster (computed in lane 0 of a group).
+float importance(const LightBounds& bounds, const ShadingPoint& point);
 
 }  // namespace freezeray::ch10
