@@ -125,7 +125,9 @@ Lanes importance(const LightClusterGroup& c, const ShadingPoint& point) {
     const Lanes dx = point.position.x - c.centre_x, dy = point.position.y - c.centre_y, dz = point.position.z - c.centre_z;
     const Lanes distance_squared = dx * dx + dy * dy + dz * dz;
     const Lanes distance = sqrt(distance_squared);
-    const Lanes inverse_distance = select(distance > 0.0f, 1.0f / distance, splat(0.0f));
+    // 1 / d as d / d^2: the division need not wait for the square root.
+    const Lanes inverse_distance_squared = 1.0f / distance_squared;
+    const Lanes inverse_distance = select(distance > 0.0f, distance * inverse_distance_squared, splat(0.0f));
 
     // theta_b: the half-angle of the box's bounding sphere seen from the point (the whole
     // sphere of directions from inside it: cos_b = -1). Its sine and cosine, like the others
@@ -148,7 +150,7 @@ Lanes importance(const LightClusterGroup& c, const ShadingPoint& point) {
     const LaneMask reaches = (cos_p >= c.cos_theta_e - ConeSlack) & (c.phi > 0.0f);
 
     // phi / d^2, with d at least the radius (a point inside gets phi / r^2).
-    const Lanes inverse_squared = select(outside, inverse_distance * inverse_distance, c.inverse_radius_squared);
+    const Lanes inverse_squared = select(outside, inverse_distance_squared, c.inverse_radius_squared);
     Lanes result = c.phi * inverse_squared * max(cos_p, splat(0.0f));
     if (point.normal != Vec3(0.0f)) {
         // The largest |cos| at the point's normal over the cluster; never 0, since the sampler
