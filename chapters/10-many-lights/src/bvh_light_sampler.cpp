@@ -194,17 +194,18 @@ void BvhLightSampler::gather(const std::vector<BinaryNode>& binary, std::uint32_
 // END BOOK
 
 // BOOK(child-probabilities)
-ChildProbabilities child_probabilities(const LightTreeNode& node, const ShadingPoint& point) {
-    // Each importance divided by the width, so that their sum stays finite when every one is
-    // the largest float.
-    const Lanes weights = importance(node.children, point) * (1.0f / LightTreeWidth);
-    const float sum = (weights[0] + weights[1]) + (weights[2] + weights[3]);
+ChildWeights child_weights(const LightTreeNode& node, const ShadingPoint& point) {
+    const Lanes weight = importance(node.children, point) * (1.0f / LightTreeWidth);
+    return {weight, (weight[0] + weight[1]) + (weight[2] + weight[3])};
+}
+
+ChildProbabilities child_probabilities(const ChildWeights& weights) {
     ChildProbabilities p;
-    if (!(sum > 0.0f)) {
+    if (!(weights.sum > 0.0f)) {
         p.fill(-1.0f);
         return p;
     }
-    const Lanes shares = weights / sum;
+    const Lanes shares = weights.weight / weights.sum;
     for (int i = 0; i < LightTreeWidth; ++i) p[static_cast<std::size_t>(i)] = shares[i];
     return p;
 }
@@ -217,7 +218,7 @@ std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, fl
         const std::size_t i = std::min(static_cast<std::size_t>(u / infinite_probability_ * static_cast<float>(n)), n - 1);
         return LightChoice{infinite_lights_[i], infinite_probability_ / static_cast<float>(n)};
     }
-    // EXERCISE(ch10/tree-walk): the walk of book chapter 10, "The walk and its probability", as sample's comment in bvh_light_sampler.hpp states it: u rescaled to the tree's share, at each node the child whose share of [0, 1) holds u (child_probabilities laid end to end), u reused, the probability multiplied from the root down; nothing where no child can send light, and a tree of one light chosen only where it can
+    // EXERCISE(ch10/tree-walk): the walk of book chapter 10, "The walk and its probability", as sample's comment in bvh_light_sampler.hpp states it: u rescaled to the tree's share, at each node the child whose share of [0, 1) holds u (the weights of child_weights laid end to end, over their sum), u reused, the probability multiplied from the root down; nothing where no child can send light, and a tree of one light chosen only where it can
     if (nodes_.empty()) return std::nullopt;
     u = std::min((u - infinite_probability_) / (1.0f - infinite_probability_), OneMinusEpsilon);
     float probability = 1.0f - infinite_probability_;
@@ -225,20 +226,23 @@ std::optional<LightChoice> BvhLightSampler::sample(const ShadingPoint& point, fl
     for (;;) {
         // Down to the child whose share of [0, 1) holds u; u is reused, rescaled within it.
         const LightTreeNode& node = nodes_[index];
-        const ChildProbabilities p = child_probabilities(node, point);
-        if (p[0] < 0.0f) return std::nullopt;  // no light below sends light here
+        const ChildWeights w = child_weights(node, point);
+        if (!(w.sum > 0.0f)) return std::nullopt;  // no light below sends light here
+        const ChildProbabilities p = child_probabilities(w);
+        // The shares are compared as weights with u times their sum, so that the choice does not
+        // wait for the divisions that give the probabilities.
+        const float target = u * w.sum;
         int child = 0;
         float share_start = 0.0f, share_end = 0.0f;
         for (int i = 0; i < static_cast<int>(node.child_count); ++i) {
             if (p[static_cast<std::size_t>(i)] == 0.0f) continue;  // no share: never taken
             child = i;
             share_start = share_end;
-            share_end += p[static_cast<std::size_t>(i)];
-            if (u < share_end) break;
+            share_end += w.weight[i];
+            if (target < share_end) break;
         }
-        const float p_child = p[static_cast<std::size_t>(child)];
-        u = std::min((u - share_start) / p_child, OneMinusEpsilon);
-        probability *= p_child;
+        u = std::min((target - share_start) / w.weight[child], OneMinusEpsilon);
+        probability *= p[static_cast<std::size_t>(child)];
         if (node.child_is_light(child)) return LightChoice{lights_[node.child_index(child)].get(), probability};
         index = node.child_index(child);
     }

@@ -35,23 +35,35 @@ struct LightTreeNode {
 };
 // END BOOK
 
-// The probabilities of going to each child of a node from `point`: in proportion to their
-// importance, 0 in empty lanes; all -1 when no child can send light there.
+// The weights of a node's children at `point`: their importances divided by the width, so that
+// their sum stays finite even when each is the largest float (0 in empty lanes); and that sum.
+struct ChildWeights {
+    Lanes weight;
+    float sum;
+};
+ChildWeights child_weights(const LightTreeNode& node, const ShadingPoint& point);
+
+// The probabilities of going to each child of a node: weight / sum, 0 in empty lanes; all -1
+// when no child can send light there (the sum is 0).
 using ChildProbabilities = std::array<float, LightTreeWidth>;
-ChildProbabilities child_probabilities(const LightTreeNode& node, const ShadingPoint& point);
+ChildProbabilities child_probabilities(const ChildWeights& weights);
+inline ChildProbabilities child_probabilities(const LightTreeNode& node, const ShadingPoint& point) {
+    return child_probabilities(child_weights(node, point));
+}
 
 class BvhLightSampler final : public LightSampler {
 public:
     explicit BvhLightSampler(const std::vector<std::unique_ptr<Light>>& lights);
 
     // A light beside the tree with probability infinite_probability(); otherwise u, rescaled to
-    // [0, 1), walks the tree from the root: at each node it goes to the child whose
-    // share of [0, 1) holds u, the shares being the probabilities of child_probabilities laid end
-    // to end in the children's order (a child of probability 0 has none; a u that rounding leaves
-    // past them all goes to the last child that has one), u rescaled to [0, 1) again within that
-    // share; the choice's probability is 1 - infinite_probability() times the probabilities of
-    // the children taken, multiplied from the root down (so that probability() gives the same
-    // float). Nothing where no child of a node can send light to the point.
+    // [0, 1), walks the tree from the root: at each node it goes to the child whose share of
+    // [0, 1) holds u, the shares being the children's weights (child_weights) laid end to end in
+    // their order, over their sum (a child whose probability is 0 has none; a u that rounding
+    // leaves past them all goes to the last child that has one), u rescaled to [0, 1) again
+    // within that share; the choice's probability is 1 - infinite_probability() times the
+    // child_probabilities of the children taken, multiplied from the root down (so that
+    // probability() gives the same float). Nothing where no child of a node can send light to
+    // the point.
     std::optional<LightChoice> sample(const ShadingPoint& point, float u) const override;
     float probability(const ShadingPoint& point, const Light& light) const override;
     std::vector<std::string> description() const override;
