@@ -1,7 +1,8 @@
 // Grading tests of chapter 10's exercises. ch10/cluster-importance is checked against values
 // worked out by hand from the bound (book chapter 10): a point light seen head on, at 60 degrees
 // and at grazing incidence; a small one-sided light seen from its front, from 45 degrees and from
-// behind; a point inside a cluster; a spot-like cone from inside and outside its reach.
+// behind; a point inside a cluster; a spot-like cone from inside and outside its reach; and lane
+// by lane (four clusters in one group give what each gives alone, an empty lane 0).
 // ch10/tree-path-probability is checked against the probabilities sample() reports for the
 // lights it chooses (its own walk), beside-the-tree lights and lights never reached.
 // ch10/tree-walk is checked against the probability of every light found by enumerating the
@@ -92,6 +93,30 @@ TEST_CASE("ch10/cluster-importance", "[exercise]") {
     // A cluster of no power sends nothing.
     const LightBounds dark = cluster(Vec3(0.0f), Vec3(1.0f), Vec3(0.0f, 0.0f, 1.0f), 0.0f, -1.0f, 0.0f);
     CHECK(importance(dark, {Vec3(5.0f), Vec3(0.0f)}) == 0.0f);
+
+    // Lane by lane: four different clusters in one group give, each in its lane, what each gives
+    // alone (in lane 0, with the other lanes empty), to the bit; an empty lane gives 0.
+    const LightBounds groups[2][LaneCount] = {{point_light, small, big, spot}, {spot, dark, small, point_light}};
+    const ShadingPoint points[] = {{Vec3(0.0f, 0.0f, 2.0f), tilted}, {Vec3(s, 0.0f, s), Vec3(0.0f)}, {Vec3(0.5f, 0.0f, 0.0f), Vec3(1.0f, 0.0f, 0.0f)},
+                                   {at_30, Vec3(0.0f, 1.0f, 0.0f)}, {Vec3(3.0f, 1.0f, -0.5f), Vec3(0.0f)}};
+    for (const auto& members : groups) {
+        LightClusterGroup group;
+        for (int lane = 0; lane < LaneCount; ++lane) group.set(lane, members[lane]);
+        for (const ShadingPoint& point : points) {
+            const Lanes together = importance(group, point);
+            for (int lane = 0; lane < LaneCount; ++lane) {
+                INFO("lane " << lane << ", point (" << point.position.x << ", " << point.position.y << ", " << point.position.z << ")");
+                CHECK(together[lane] == importance(members[lane], point));
+            }
+        }
+    }
+    LightClusterGroup one;
+    one.set(1, small);
+    const Lanes alone = importance(one, {Vec3(0.0f, 0.0f, 10.0f), Vec3(0.0f)});
+    CHECK(alone[0] == 0.0f);
+    CHECK(alone[1] == Approx(0.03).epsilon(relative));
+    CHECK(alone[2] == 0.0f);
+    CHECK(alone[3] == 0.0f);
 }
 
 namespace {
