@@ -139,19 +139,22 @@ Lanes importance(const LightClusterGroup& c, const ShadingPoint& point) {
     // cos theta': theta' is the smallest angle between an emitter's normal and a direction to the
     // point: theta_w from the cone's axis, less theta_o (the normals' spread), less theta_b (the
     // cluster's extent), at least 0. Each step is computed in every lane, clamped or not, and
-    // the clamps are selects.
+    // the clamps are selects. A cluster that emits every way (theta_o = pi) needs no case of its
+    // own: theta_w - theta_o is never above 0, so cos theta' comes out 1.
     const Lanes w_dot = c.w_x * dx + c.w_y * dy + c.w_z * dz;
     const Lanes cos_w = w_dot * inverse_distance;
     const Lanes sin_w = safe_sqrt(distance_squared - w_dot * w_dot) * inverse_distance;
     const Lanes cos_x = cos_sub_clamped(sin_w, cos_w, c.sin_theta_o, c.cos_theta_o);
     const Lanes sin_x = sin_sub_clamped(sin_w, cos_w, c.sin_theta_o, c.cos_theta_o);
-    const Lanes cos_p = select(c.cos_theta_o > -1.0f, cos_sub_clamped(sin_x, cos_x, sin_b, cos_b), splat(1.0f));
+    const Lanes cos_p = cos_sub_clamped(sin_x, cos_x, sin_b, cos_b);
     // Outside every emitter's cone by more than rounding: no light of the cluster reaches here.
     const LaneMask reaches = (cos_p >= c.cos_theta_e - ConeSlack) & (c.phi > 0.0f);
 
-    // phi / d^2, with d at least the radius (a point inside gets phi / r^2).
+    // phi / d^2, with d at least the radius (a point inside gets phi / r^2), at most the largest
+    // float (a point on a point light); the cosines below only make it smaller.
     const Lanes inverse_squared = select(outside, inverse_distance_squared, c.inverse_radius_squared);
-    Lanes result = c.phi * inverse_squared * max(cos_p, splat(0.0f));
+    const Lanes power = min(c.phi * inverse_squared, splat(std::numeric_limits<float>::max()));
+    Lanes result = power * max(cos_p, splat(0.0f));
     if (point.normal != Vec3(0.0f)) {
         // The largest |cos| at the point's normal over the cluster; never 0, since the sampler
         // does not know whether the surface lets light through from behind or at grazing angles.
@@ -161,8 +164,7 @@ Lanes importance(const LightClusterGroup& c, const ShadingPoint& point) {
         result *= max(cos_sub_clamped(sin_i, cos_i, sin_b, cos_b), splat(ReceiverFloor));
     }
     // A cluster's emitter cosine may be 0 at the edge of its cone: keep it samplable there.
-    result = min(max(result, splat(std::numeric_limits<float>::min())), splat(std::numeric_limits<float>::max()));
-    return select(reaches, result, splat(0.0f));
+    return select(reaches, max(result, splat(std::numeric_limits<float>::min())), splat(0.0f));
     // END EXERCISE
 }
 // END BOOK
