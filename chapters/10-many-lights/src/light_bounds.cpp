@@ -120,7 +120,7 @@ void LightClusterGroup::set(int lane, const LightBounds& bounds) {
 }
 
 // BOOK(light-importance)
-Lanes importance(const LightClusterGroup& c, const ShadingPoint& point) {
+FREEZERAY_ALSO_FOR_AVX2 Lanes importance(const LightClusterGroup& c, const ShadingPoint& point) {
     // EXERCISE(ch10/cluster-importance): the bound on what each cluster of the group can send to the point, book chapter 10, "The importance of a cluster", as importance's comment in light_bounds.hpp states it, lane by lane; never 0 where some light of a cluster may reach the point, 0 in a lane without a cluster
     const Lanes dx = point.position.x - c.centre_x, dy = point.position.y - c.centre_y, dz = point.position.z - c.centre_z;
     const Lanes distance_squared = dx * dx + dy * dy + dz * dz;
