@@ -195,6 +195,7 @@ void BvhLightSampler::gather(const std::vector<BinaryNode>& binary, std::uint32_
 
 // BOOK(child-probabilities)
 ChildWeights child_weights(const LightTreeNode& node, const ShadingPoint& point) {
+    static_assert(LightTreeWidth == 4, "the sum below adds four lanes");
     const Lanes weight = importance(node.children, point) * (1.0f / LightTreeWidth);
     return {weight, (weight[0] + weight[1]) + (weight[2] + weight[3])};
 }
