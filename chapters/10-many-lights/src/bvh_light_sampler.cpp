@@ -61,7 +61,8 @@ BvhLightSampler::BvhLightSampler(const std::vector<std::unique_ptr<Light>>& ligh
     }
     light_slots_.assign(lights.size(), Slot{NotInTree, 0});
     if (!entries.empty()) {
-        if (entries.size() >= LightTreeNode::LightBit) throw std::length_error("light BVH: more than 2^31 lights");
+        // A node names a light by its index with LightBit set: every index must stay below it.
+        if (lights.size() > LightTreeNode::LightBit) throw std::length_error("light BVH: more than 2^31 lights");
         std::vector<BinaryNode> binary;
         binary.reserve(2 * entries.size() - 1);
         const std::uint32_t root = build_binary(entries, 0, entries.size(), 0, binary);
@@ -144,7 +145,7 @@ std::uint32_t BvhLightSampler::build_binary(std::vector<Entry>& entries, std::si
     node.children[0] = build_binary(entries, begin, middle, depth + 1, binary);
     node.children[1] = build_binary(entries, middle, end, depth + 1, binary);
     node.bounds = bounds_union(binary[node.children[0]].bounds, binary[node.children[1]].bounds);
-    node.lights = binary[node.children[0]].lights + binary[node.children[1]].lights;
+    node.light_count = binary[node.children[0]].light_count + binary[node.children[1]].light_count;
     binary.push_back(node);
     return static_cast<std::uint32_t>(binary.size() - 1);
 }
@@ -165,7 +166,7 @@ void BvhLightSampler::gather(const std::vector<BinaryNode>& binary, std::uint32_
     while (count < LightTreeWidth) {
         int open = -1;
         for (int i = 0; i < count; ++i)
-            if (!binary[group[i]].is_leaf && (open < 0 || binary[group[i]].lights > binary[group[open]].lights)) open = i;
+            if (!binary[group[i]].is_leaf && (open < 0 || binary[group[i]].light_count > binary[group[open]].light_count)) open = i;
         if (open < 0) break;  // only leaves
         const BinaryNode& opened = binary[group[open]];
         std::copy_backward(group + open + 1, group + count, group + count + 1);

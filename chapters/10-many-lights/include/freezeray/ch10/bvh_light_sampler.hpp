@@ -87,8 +87,8 @@ private:
     struct BinaryNode {
         LightBounds bounds;
         std::uint32_t children[2] = {0, 0};
-        std::uint32_t light = 0;
-        std::uint32_t lights = 1;  // in its subtree
+        std::uint32_t light = 0;        // a leaf's light (Light::index)
+        std::uint32_t light_count = 1;  // the lights in its subtree
         bool is_leaf = false;
     };
     // Builds the binary subtree of entries [begin, end) into `binary`; returns its root's index.
