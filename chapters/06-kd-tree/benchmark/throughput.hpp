@@ -22,9 +22,9 @@ struct ThroughputMeasurement {
 
 // Traces the batch (Accelerator::intersect, or occluded for shadow rays) once to warm caches and
 // branch predictors up, then `repetitions` times timed, and returns the median time. intersect
-// fills in a whole Hit, as the renderer needs: that is part of what is measured. The rays
-// are split into `threads` contiguous ranges of nearly equal size, one std::thread each (a
-// static partition: no scheduling cost inside the timed region besides starting the threads).
+// fills in a whole Hit, as the renderer needs: that is part of what is measured. With several
+// threads (one std::thread each), each takes the next chunk of 1024 consecutive rays until none
+// is left, so that they finish together, as a renderer's threads take tiles.
 ThroughputMeasurement measure_throughput(const Accelerator& accelerator, const std::vector<Ray>& rays, RayKind kind,
                                          int threads, int repetitions);
 
