@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """sponza_to_pbrt.py writes a pbrt-v3 scene of scenes/sponza/scene.json that holds what the book's
 side-by-side timing says it holds: every triangle of the OBJ, the scene's camera, textures that
-exist, and paths of the same length. Exit 77 (skipped) without the shared scenes.
+exist, and paths of the same length; and in pbrt-v4's dialect the same, with the JPEG textures,
+the alpha masks, the seed, the image file and the size asked for. Exit 77 (skipped) without the
+shared scenes.
 Usage: test_sponza_to_pbrt.py SOURCE_DIR"""
 import json
 import os
@@ -58,4 +60,33 @@ with tempfile.TemporaryDirectory() as work:
     textures = re.findall(r'"string filename" "([^"]*)"', text)
     check("%d textures, every one a PNG that exists" % len(textures),
           len(textures) > 0 and all(t.endswith(".png") and os.path.isfile(t) for t in textures))
+
+    # pbrt-v4's dialect.
+    out = os.path.join(work, "sponza-v4.pbrt")
+    run = subprocess.run([sys.executable, os.path.join(source, "chapters", "06-kd-tree", "benchmark", "sponza_to_pbrt.py"),
+                          "--out", out, "--spp", "3", "--pbrt-version", "4", "--seed", "17", "--image", "x.pfm",
+                          "--width", "200", "--height", "100"], capture_output=True, text=True)
+    check("pbrt-v4: the script succeeds", run.returncode == 0)
+    if run.returncode != 0:
+        print(run.stderr)
+        sys.exit(1)
+    v4 = open(out).read()
+    indices = re.findall(r'"integer indices" \[([^\]]*)\]', v4)
+    check("pbrt-v4: the OBJ's triangles", sum(len(i.split()) for i in indices) // 3 == expected_triangles)
+    check("pbrt-v4: the same camera", look_at in v4 and '"float fov" %s' % camera["fov_vertical_degrees"] in v4)
+    check("pbrt-v4: the size asked for, the image file and the seed",
+          'Film "rgb" "integer xresolution" 200 "integer yresolution" 100 "string filename" "x.pfm"' in v4
+          and '"integer seed" 17' in v4)
+    check("pbrt-v4: its names for positions, texture coordinates and diffuse materials",
+          '"point3 P"' in v4 and '"point2 uv"' in v4 and '"point P"' not in v4 and 'Material "diffuse"' in v4
+          and '"matte"' not in v4 and "WorldEnd" not in v4)
+    images = re.findall(r'"spectrum" "imagemap" "string filename" "([^"]*)"', v4)
+    check("pbrt-v4: %d colour textures, JPEGs among them, every one a file" % len(images),
+          len(images) > len(textures) and any(t.endswith(".jpg") for t in images)
+          and all(os.path.isfile(t) for t in images))
+    mtl = open(os.path.join(shared, "crytek-sponza", "sponza.mtl")).read()
+    masks = re.findall(r'"float" "imagemap" "string filename" "([^"]*)"', v4)
+    check("pbrt-v4: one alpha texture per map_d of the MTL (%d), each on its mesh" % len(masks),
+          len(masks) == len(re.findall(r"^\s*map_d ", mtl, re.M)) > 0
+          and v4.count('"texture alpha"') == len(masks) and all(os.path.isfile(t) for t in masks))
 sys.exit(1 if failures else 0)
