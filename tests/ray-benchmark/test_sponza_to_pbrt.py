@@ -65,7 +65,8 @@ with tempfile.TemporaryDirectory() as work:
     out = os.path.join(work, "sponza-v4.pbrt")
     run = subprocess.run([sys.executable, os.path.join(source, "chapters", "06-kd-tree", "benchmark", "sponza_to_pbrt.py"),
                           "--out", out, "--spp", "3", "--pbrt-version", "4", "--seed", "17", "--image", "x.pfm",
-                          "--width", "200", "--height", "100"], capture_output=True, text=True)
+                          "--width", "200", "--height", "100", "--texture-filter", "trilinear"],
+                         capture_output=True, text=True)
     check("pbrt-v4: the script succeeds", run.returncode == 0)
     if run.returncode != 0:
         print(run.stderr)
@@ -80,10 +81,10 @@ with tempfile.TemporaryDirectory() as work:
     check("pbrt-v4: its names for positions, texture coordinates and diffuse materials",
           '"point3 P"' in v4 and '"point2 uv"' in v4 and '"point P"' not in v4 and 'Material "diffuse"' in v4
           and '"matte"' not in v4 and "WorldEnd" not in v4)
-    images = re.findall(r'"spectrum" "imagemap" "string filename" "([^"]*)"', v4)
-    check("pbrt-v4: %d colour textures, JPEGs among them, every one a file" % len(images),
+    images = re.findall(r'"spectrum" "imagemap" "string filename" "([^"]*)" "string filter" "trilinear"', v4)
+    check("pbrt-v4: %d colour textures, JPEGs among them, every one a file, filtered as asked" % len(images),
           len(images) > len(textures) and any(t.endswith(".jpg") for t in images)
-          and all(os.path.isfile(t) for t in images))
+          and all(os.path.isfile(t) for t in images) and len(images) == v4.count('"spectrum" "imagemap"'))
     mtl = open(os.path.join(shared, "crytek-sponza", "sponza.mtl")).read()
     masks = re.findall(r'"float" "imagemap" "string filename" "([^"]*)"', v4)
     check("pbrt-v4: one alpha texture per map_d of the MTL (%d), each on its mesh" % len(masks),

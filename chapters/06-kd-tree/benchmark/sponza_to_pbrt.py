@@ -4,7 +4,7 @@ and error can be measured against pbrt's path tracer on the same view (book/06-k
 "Against pbrt-v3"; book/11-results.md, "Against pbrt-v4").
 
   sponza_to_pbrt.py --out sponza.pbrt [--spp N] [--pbrt-version 3|4] [--seed S] [--image FILE]
-                    [--width W --height H] [--scene scenes/sponza/scene.json]
+                    [--texture-filter F] [--width W --height H] [--scene scenes/sponza/scene.json]
 
 What is the same: the triangles (the OBJ's polygons cut into fans: for its planar quads the
 surface FreezeRay's loader gives too, with the normals and texture coordinates), the camera
@@ -14,7 +14,8 @@ three materials get their `Kd`; pbrt-v4 reads them), a white constant sky, a box
 and the path length: FreezeRay's `max_depth` counts segments, pbrt's `maxdepth` bounces, so pbrt
 gets max_depth - 1 (both then trace paths of at most max_depth segments, with next-event
 estimation at every vertex but the last). pbrt keeps its own sampler (pbrt-v3 Halton, pbrt-v4
-its default, the Owen-scrambled, Morton-ordered `zsobol`), texture filtering and BVH.
+its default, the Owen-scrambled, Morton-ordered `zsobol`), texture filtering (pbrt-v4's
+`--texture-filter trilinear` asks for FreezeRay's, MIP-mapped over the ray's footprint) and BVH.
 
 pbrt is not part of FreezeRay: build it from its own repository (Pharr, Jakob and Humphreys,
 "Physically Based Rendering", 3rd edition, 2016, or 4th edition, 2023) and time both renderers
@@ -119,11 +120,13 @@ def main():
                         help="the scene format, pbrt-v3's or pbrt-v4's (default 3)")
     parser.add_argument("--seed", type=int, help="pbrt-v4: the sampler's seed (default: pbrt's)")
     parser.add_argument("--image", help="pbrt-v4: the image file pbrt writes (default: pbrt's)")
+    parser.add_argument("--texture-filter", choices=("point", "bilinear", "trilinear", "ewa"),
+                        help="pbrt-v4: the colour textures' filter (default: pbrt's)")
     parser.add_argument("--width", type=int, help="image width (default: the scene's)")
     parser.add_argument("--height", type=int, help="image height (default: the scene's)")
     args = parser.parse_args()
-    if args.pbrt_version == 3 and (args.seed is not None or args.image is not None):
-        sys.exit("--seed and --image are written for pbrt-v4 only")
+    if args.pbrt_version == 3 and (args.seed is not None or args.image is not None or args.texture_filter):
+        sys.exit("--seed, --image and --texture-filter are written for pbrt-v4 only")
 
     with open(args.scene) as f:
         scene = json.load(f)
@@ -182,8 +185,9 @@ def write_scene(path, args, scene, repository, groups, materials, positions, uvs
             material = materials.get(name, {"Kd": ["0.5", "0.5", "0.5"], "map_Kd": None, "map_d": None})
             texture = material["map_Kd"]
             if texture is not None and texture.lower().endswith(reads):
-                out.write('Texture "kd%d" "spectrum" "imagemap" "string filename" "%s"\n'
+                out.write('Texture "kd%d" "spectrum" "imagemap" "string filename" "%s"'
                           % (index, os.path.join(obj_folder, texture)))
+                out.write(' "string filter" "%s"\n' % args.texture_filter if args.texture_filter else "\n")
                 out.write('Material "diffuse" "texture reflectance" "kd%d"\n' % index if v4 else
                           'Material "matte" "texture Kd" "kd%d"\n' % index)
             else:
