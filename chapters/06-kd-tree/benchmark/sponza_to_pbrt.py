@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes scenes/sponza/scene.json as a pbrt-v3 or pbrt-v4 scene, so that FreezeRay's rendering speed
-and error can be measured against pbrt's path tracer on the same view (book/06-kd-tree.md,
+"""Writes scenes/sponza/scene.json as a pbrt-v3 or pbrt-v4 scene, so that FreezeRay's rendering
+speed and error can be measured against pbrt's path tracer on the same view (book/06-kd-tree.md,
 "Against pbrt-v3"; book/11-results.md, "Against pbrt-v4").
 
   sponza_to_pbrt.py --out sponza.pbrt [--spp N] [--pbrt-version 3|4] [--seed S] [--image FILE]
@@ -9,8 +9,9 @@ and error can be measured against pbrt's path tracer on the same view (book/06-k
 What is the same: the triangles (the OBJ's polygons cut into fans: for its planar quads the
 surface FreezeRay's loader gives too, with the normals and texture coordinates), the camera
 (position, look-at, up, vertical field of view, resolution; pbrt is left-handed, so the world is
-mirrored in x first), every material diffuse with its MTL `Kd` or its `map_Kd` (pbrt-v3 reads no JPEG: for it those
-three materials get their `Kd`; pbrt-v4 reads them), a white constant sky, a box pixel filter,
+mirrored in x first), every material diffuse with its MTL `Kd` or its `map_Kd` (pbrt-v3 reads
+no JPEG: for it those three materials get their `Kd`; pbrt-v4 reads them), pbrt-v4 also the
+MTL's alpha masks (`map_d`), a white constant sky, a box pixel filter,
 and the path length: FreezeRay's `max_depth` counts segments, pbrt's `maxdepth` bounces, so pbrt
 gets max_depth - 1 (both then trace paths of at most max_depth segments, with next-event
 estimation at every vertex but the last). pbrt keeps its own sampler (pbrt-v3 Halton, pbrt-v4
@@ -154,8 +155,8 @@ def main():
         raise
     os.replace(temporary, args.out)
     print("%s: pbrt-v%d, %d triangles, %d materials, %dx%d, %d spp, pbrt maxdepth %d"
-          % (args.out, args.pbrt_version, sum(len(t) for t in groups.values()), len(groups), scene["camera"]["resolution"][0],
-             scene["camera"]["resolution"][1], args.spp, scene["render"]["max_depth"] - 1))
+          % (args.out, args.pbrt_version, sum(len(t) for t in groups.values()), len(groups), width, height,
+             args.spp, scene["render"]["max_depth"] - 1))
 
 
 def write_scene(path, args, scene, repository, groups, materials, positions, uvs, normals, obj_folder):
