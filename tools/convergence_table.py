@@ -13,23 +13,12 @@ Example (chapter 01's table in book/01-naive-path-tracing.md):
 import argparse
 import os
 import re
-import struct
 import subprocess
 import sys
 import tempfile
 import time
 
-
-def read_pfm(path):
-    """Returns (width, height, list of floats RGB) of a colour PFM file."""
-    with open(path, "rb") as f:
-        if f.readline().strip() != b"PF":
-            sys.exit(f"{path}: not a colour PFM file")
-        width, height = map(int, f.readline().split())
-        scale = float(f.readline())
-        data = f.read()
-    order = "<" if scale < 0 else ">"
-    return width, height, struct.unpack(f"{order}{width * height * 3}f", data[: width * height * 12])
+from pfm_images import read_pfm, relative_mse
 
 
 def main():
@@ -65,7 +54,7 @@ def main():
             _, _, image = read_pfm(out)
             squared = [(a - b) ** 2 for a, b in zip(image, reference)]
             mse = sum(squared) / len(squared)
-            relmse = sum(s / (b * b + 1e-2) for s, b in zip(squared, reference)) / len(squared)
+            relmse = relative_mse(image, reference)
             print(f"| {spp} | {seconds:.2f} | {mse:.4g} | {relmse:.4g} | {estimate.group(1) if estimate else '?'} |")
 
 

@@ -18,13 +18,7 @@ too: it should be well below the errors it is used to measure.
 import argparse
 import sys
 
-from convergence_table import read_pfm
-
-EPSILON = 1e-2
-
-
-def relative_mse(image, reference):
-    return sum((x - r) * (x - r) / (r * r + EPSILON) for x, r in zip(image, reference)) / len(reference)
+from pfm_images import RELATIVE_MSE_EPSILON, read_pfm, relative_mse
 
 
 def read_same_size(path, size):
@@ -44,7 +38,8 @@ def main():
     size, first = read_same_size(args.reference[0], None)
     _, second = read_same_size(args.reference[1], size)
     reference = [(a + b) / 2 for a, b in zip(first, second)]
-    noise = sum((a - b) * (a - b) / (4 * (m * m + EPSILON)) for a, b, m in zip(first, second, reference)) / len(reference)
+    noise = sum((a - b) * (a - b) / (4 * (m * m + RELATIVE_MSE_EPSILON))
+                for a, b, m in zip(first, second, reference)) / len(reference)
     print("reference: mean of %s and %s, its own relMSE about %.3g" % (args.reference[0], args.reference[1], noise))
     for path in args.images:
         _, image = read_same_size(path, size)

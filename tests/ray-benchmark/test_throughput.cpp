@@ -48,8 +48,8 @@ TEST_CASE("throughput: every ray is answered, the same on 1, 2, 3 and 7 threads"
     const std::vector<TriangleMesh> meshes = grid();
     BruteForceAccelerator accelerator;
     accelerator.build(meshes);
-    // Four whole chunks of 1024 rays and part of a fifth, so that threads share the batch.
-    const std::vector<Ray> rays = random_rays(4 * 1024 + 5, std::numeric_limits<float>::infinity());
+    // Four whole chunks and part of a fifth, so that threads share the batch.
+    const std::vector<Ray> rays = random_rays(4 * ChunkRays + 5, std::numeric_limits<float>::infinity());
     std::vector<ClosestHit> expected;
     for (const Ray& ray : rays) {
         const std::optional<Hit> hit = accelerator.intersect(ray);

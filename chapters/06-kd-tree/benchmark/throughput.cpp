@@ -18,12 +18,6 @@ ClosestHit closest_hit(const Accelerator& accelerator, const Ray& ray) {
     return ClosestHit{static_cast<std::int32_t>(hit->triangle), hit->t};
 }
 
-// Rays a thread takes at once: small enough that the threads finish together (rays differ in
-// cost by orders of magnitude, and neighbouring rays alike: a fixed half of the batch each leaves
-// one thread idle while the other traces the harder half), large enough that taking a chunk
-// (one atomic add) costs nothing beside tracing it.
-constexpr std::size_t ChunkRays = 1024;
-
 // One run over the whole batch; answers are written into the preallocated vectors, each chunk
 // by the one thread that took it, so that nothing is shared but read-only data and the counter.
 void trace_batch(const Accelerator& accelerator, const std::vector<Ray>& rays, RayKind kind, int threads,

@@ -7,6 +7,7 @@
 
 #include "freezeray/accelerator.hpp"
 
+#include <cstddef>
 #include <vector>
 
 namespace freezeray::benchmark {
@@ -20,11 +21,17 @@ struct ThroughputMeasurement {
     double mrays_per_second(std::size_t ray_count) const;
 };
 
+// Rays a thread takes at once: small enough that the threads finish together (rays differ in
+// cost by orders of magnitude, and neighbouring rays alike: a fixed half of the batch each leaves
+// one thread idle while the other traces the harder half), large enough that taking a chunk
+// (one atomic add) costs nothing beside tracing it.
+inline constexpr std::size_t ChunkRays = 1024;
+
 // Traces the batch (Accelerator::intersect, or occluded for shadow rays) once to warm caches and
 // branch predictors up, then `repetitions` times timed, and returns the median time. intersect
 // fills in a whole Hit, as the renderer needs: that is part of what is measured. With several
-// threads (one std::thread each), each takes the next chunk of 1024 consecutive rays until none
-// is left, so that they finish together, as a renderer's threads take tiles.
+// threads (one std::thread each), each takes the next chunk of ChunkRays consecutive rays until
+// none is left, so that they finish together, as a renderer's threads take tiles.
 ThroughputMeasurement measure_throughput(const Accelerator& accelerator, const std::vector<Ray>& rays, RayKind kind,
                                          int threads, int repetitions);
 
