@@ -78,15 +78,16 @@ namespace {
 // BOOK(classify-triangles)
 // The classification of Wald and Havran 2006, section 4.3: a triangle is below the plane if its box ends at or
 // before it, above if it starts at or after it, both if the plane cuts its box; a triangle lying
-// in the plane goes to the side the cost model chose.
+// in the plane goes to the side the cost model chose. One pass: a triangle's Start event comes
+// before its End event (its box is not flat along the axis, so it starts before it ends), and
+// the End event corrects what the Start event set when the box ends at or before the plane.
 void classify_triangles(const std::vector<SplitEvent>& axis_events, const SplitPlane& plane, std::vector<Side>& sides) {
-    for (const SplitEvent& e : axis_events) sides[e.triangle] = Side::Both;
     for (const SplitEvent& e : axis_events) {
-        if (e.type == EventType::End && e.position <= plane.position) {
-            sides[e.triangle] = Side::Below;
-        } else if (e.type == EventType::Start && e.position >= plane.position) {
-            sides[e.triangle] = Side::Above;
-        } else if (e.type == EventType::Planar) {
+        if (e.type == EventType::Start) {
+            sides[e.triangle] = e.position >= plane.position ? Side::Above : Side::Both;
+        } else if (e.type == EventType::End) {
+            if (e.position <= plane.position) sides[e.triangle] = Side::Below;
+        } else {  // Planar
             const bool below = e.position < plane.position || (e.position == plane.position && plane.planar_below);
             sides[e.triangle] = below ? Side::Below : Side::Above;
         }

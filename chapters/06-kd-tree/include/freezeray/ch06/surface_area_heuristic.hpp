@@ -25,7 +25,8 @@ inline double surface_area(const Bounds3& box) {
 // The intersection tests a ray makes in a leaf of n triangles: n, or ceil(n / W) when the
 // triangles are tested W at a time (settings.triangles_per_test, chapter 07's packets).
 inline std::size_t intersection_tests(const KdTreeSettings& settings, std::size_t triangle_count) {
-    const std::size_t per_test = static_cast<std::size_t>(settings.triangles_per_test > 1 ? settings.triangles_per_test : 1);
+    if (settings.triangles_per_test <= 1) return triangle_count;  // the common case, without a division
+    const auto per_test = static_cast<std::size_t>(settings.triangles_per_test);
     return (triangle_count + per_test - 1) / per_test;
 }
 
