@@ -11,7 +11,8 @@ namespace freezeray::ch06 {
 // BOOK(split-plane-sweep)
 SplitPlane find_split_plane(const NodeEvents& events, const Bounds3& cell, std::size_t triangle_count,
                             const KdTreeSettings& settings) {
-    // EXERCISE(ch06/sah-sweep): the sweep of book chapter 06, "The sweep", as find_split_plane's comment in split_plane_sweep.hpp states it: every plane through an event on each axis the cell is not flat along, its counts below, in and above it from the events met so far, both sides for the triangles lying in it, costed with split_cost; the cheapest, first found on ties
+    // EXERCISE(ch06/sah-sweep): the sweep of book chapter 06, "The sweep", as find_split_plane's comment in split_plane_sweep.hpp states it: every plane through an event on each axis the cell is not flat along, its counts below, in and above it from the events met so far, both sides for the triangles lying in it, costed with SplitCostModel::cost; the cheapest, first found on ties
+    const SplitCostModel costs(settings, cell);
     SplitPlane best;
     best.cost = std::numeric_limits<double>::infinity();
     auto consider = [&](int axis, float position, std::size_t below, std::size_t above, bool planar_below) {
@@ -19,8 +20,7 @@ SplitPlane find_split_plane(const NodeEvents& events, const Bounds3& cell, std::
         // whole cell and every triangle: no progress (and the empty bonus would repeat forever).
         if (position == cell.min[axis] && below == 0) return;
         if (position == cell.max[axis] && above == 0) return;
-        const double cost = split_cost(settings, cell, axis, position, intersection_tests(settings, below),
-                                       intersection_tests(settings, above));
+        const double cost = costs.cost(axis, position, intersection_tests(settings, below), intersection_tests(settings, above));
         if (cost < best.cost) best = SplitPlane{axis, position, planar_below, cost, below, above};
     };
 
