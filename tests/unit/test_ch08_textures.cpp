@@ -28,6 +28,7 @@
 
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <thread>
 #include <vector>
@@ -109,6 +110,45 @@ TEST_CASE("ch08: 8-bit texels hold an image from an 8-bit file exactly; others a
     CHECK(in_floats.memory_bytes() == 12u * 9u * 5u);
     for (int y = 0; y < 5; ++y)
         for (int x = 0; x < 9; ++x) CHECK(same_bits(in_floats.texel(x, y), floats.at(x, y)));
+}
+
+TEST_CASE("ch08: a byte texel's code is the one whose value is nearest, the lower of two equally near", "[unit][ch08]") {
+    // Against a search of all 256 codes, for both decodings: every code's own value, the values
+    // a float step either side of it, midpoints between neighbours (ties), random values in and
+    // out of [0, 1]; then infinities and NaN, which go to the ends of the table.
+    for (const ByteDecoding* decoding : byte_decodings()) {
+        const ByteTexels texels{decoding};
+        auto nearest = [&](float x) {
+            int best = 0;
+            for (int c = 1; c < 256; ++c)
+                if (std::abs(x - decoding->value[static_cast<std::size_t>(c)]) <
+                    std::abs(x - decoding->value[static_cast<std::size_t>(best)]))
+                    best = c;
+            return best;
+        };
+        std::vector<float> values{0.0f, -0.0f, -1.0f, 1.0f, 2.0f, 1e-30f};
+        for (int c = 0; c < 256; ++c) {
+            const float v = decoding->value[static_cast<std::size_t>(c)];
+            values.insert(values.end(), {v, std::nextafter(v, -1.0f), std::nextafter(v, 2.0f)});
+            if (c < 255) values.push_back(0.5f * (v + decoding->value[static_cast<std::size_t>(c + 1)]));
+        }
+        PCG32 random(808, 8);
+        for (int i = 0; i < 20000; ++i) values.push_back(1.2f * random.next_float() - 0.1f);
+        for (const float x : values) {
+            INFO(decoding->name << " decoding, x = " << x);
+            const Spectrum value(x, x, x);
+            REQUIRE(static_cast<int>(texels.encode(value).code[0]) == nearest(x));
+            const std::optional<ByteTexels::Stored> exact = texels.encode_exactly(value);
+            const bool held = std::bit_cast<std::uint32_t>(decoding->value[static_cast<std::size_t>(nearest(x))]) ==
+                              std::bit_cast<std::uint32_t>(x);
+            REQUIRE(exact.has_value() == held);
+        }
+        const float nan = std::numeric_limits<float>::quiet_NaN(), infinity = std::numeric_limits<float>::infinity();
+        CHECK(texels.encode(Spectrum(infinity)).code[0] == 255);
+        CHECK(texels.encode(Spectrum(-infinity)).code[0] == 0);
+        CHECK(texels.encode(Spectrum(nan, nan, nan)).code[0] == 0);
+        CHECK_FALSE(texels.encode_exactly(Spectrum(nan, nan, nan)).has_value());
+    }
 }
 
 TEST_CASE("ch08: a MIP level is the exact box average of the level below, for any size", "[unit][ch08]") {

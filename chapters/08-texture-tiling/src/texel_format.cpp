@@ -10,12 +10,18 @@ namespace freezeray::ch08 {
 namespace {
 
 ByteDecoding make_decoding(const char* name, bool data) {
-    ByteDecoding decoding{name, {}};
+    ByteDecoding decoding{name, {}, {}};
     for (int code = 0; code < 256; ++code) {
         // The same expressions, in the same order, as image_io_png.cpp and chapter 02's
         // read_texture_image: the same floats, bit for bit.
         const float linear = srgb_to_linear(static_cast<float>(code) / 255.0f);
         decoding.value[static_cast<std::size_t>(code)] = data ? linear_to_srgb(linear) : linear;
+    }
+    for (int bucket = 0; bucket < ByteDecoding::IndexBuckets; ++bucket) {
+        const float start = static_cast<float>(bucket) / static_cast<float>(ByteDecoding::IndexBuckets);
+        int code = 0;
+        while (code < 255 && decoding.value[static_cast<std::size_t>(code + 1)] < start) ++code;
+        decoding.search_start[static_cast<std::size_t>(bucket)] = static_cast<std::uint8_t>(code);
     }
     return decoding;
 }
@@ -23,11 +29,16 @@ ByteDecoding make_decoding(const char* name, bool data) {
 // The code whose value is nearest `x` (the lower of two equally near). The table increases.
 std::uint8_t nearest_code(const ByteDecoding& decoding, float x) {
     const auto& table = decoding.value;
-    const auto above = std::lower_bound(table.begin(), table.end(), x);
-    if (above == table.begin()) return 0;
-    if (above == table.end()) return 255;
-    const auto below = std::prev(above);
-    return static_cast<std::uint8_t>((x - *below <= *above - x ? below : above) - table.begin());
+    if (!(x > table[0])) return 0;  // at or below the first value, or NaN
+    if (x >= table[255]) return 255;
+    // Now table[0] < x < table[255]. From the bucket's start, the code just below x: the first
+    // code at or above x is then the next one (as std::lower_bound would find it).
+    const int bucket = std::clamp(static_cast<int>(x * static_cast<float>(ByteDecoding::IndexBuckets)), 0,
+                                  ByteDecoding::IndexBuckets - 1);
+    std::size_t below = decoding.search_start[static_cast<std::size_t>(bucket)];
+    while (table[below + 1] < x) ++below;
+    const std::size_t above = below + 1;
+    return static_cast<std::uint8_t>(x - table[below] <= table[above] - x ? below : above);
 }
 
 }  // namespace
