@@ -65,6 +65,28 @@ Hit make_hit(const std::vector<TriangleMesh>& meshes, std::uint32_t mesh_index, 
     return hit;
 }
 
+Ray continue_behind(const Ray& ray, const Hit& hit) {
+    Ray next = hit.spawn_ray(ray.direction);
+    next.tmax = ray.tmax - glm::dot(next.origin - ray.origin, ray.direction);
+    return next;
+}
+
+bool Accelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
+    // Closest hit after closest hit: each one either counts, or the ray goes on behind it. A ray
+    // that meets more than this many triangles not counted, one behind the other, is taken as
+    // blocked, as Scene::MaxCutoutCrossings takes it.
+    constexpr int MaxCrossings = 64;
+    Ray r = ray;
+    for (int crossing = 0; crossing <= MaxCrossings; ++crossing) {
+        const std::optional<Hit> hit = intersect(r);
+        if (!hit) return false;
+        if (counted[hit->mesh][hit->triangle] != 0) return true;
+        r = continue_behind(r, *hit);
+        if (!(r.tmax > 0.0f)) return false;
+    }
+    return true;
+}
+
 bool clip_ray_to_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds, float& t_enter,
                         float& t_exit) {
     float t0 = 0.0f;
@@ -119,6 +141,22 @@ std::optional<Hit> BruteForceAccelerator::intersect(const Ray& ray) const {
     }
     if (!closest) return std::nullopt;
     return make_hit(*meshes_, closest_mesh, closest_triangle, *closest);
+}
+
+bool BruteForceAccelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
+    const RayShear shear(ray.direction);
+    const Vec3 inverse_direction = 1.0f / ray.direction;
+    for (std::uint32_t m = 0; m < meshes_->size(); ++m) {
+        if (!ray_intersects_bounds(ray, inverse_direction, mesh_bounds_[m])) continue;
+        const TriangleMesh& mesh = (*meshes_)[m];
+        for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+            if (counted[m][t] == 0) continue;
+            const auto& idx = mesh.triangles[t];
+            if (intersect_triangle(ray, shear, mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]))
+                return true;
+        }
+    }
+    return false;
 }
 
 bool BruteForceAccelerator::occluded(const Ray& ray) const {

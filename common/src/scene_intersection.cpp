@@ -5,17 +5,6 @@
 
 namespace freezeray {
 
-namespace {
-
-// The ray that continues `ray` behind `hit`: the same direction, from just beyond the surface
-// (offset as every spawned ray is), as far as `ray` still had to go.
-Ray continue_behind(const Ray& ray, const Hit& hit) {
-    Ray next = hit.spawn_ray(ray.direction);
-    next.tmax = ray.tmax - glm::dot(next.origin - ray.origin, ray.direction);
-    return next;
-}
-
-}  // namespace
 
 // BOOK(alpha-cutout)
 std::optional<Hit> Scene::intersect_through_cutouts(const Ray& ray) const {
@@ -33,8 +22,13 @@ std::optional<Hit> Scene::intersect_through_cutouts(const Ray& ray) const {
 }
 
 bool Scene::occluded_through_cutouts(const Ray& ray) const {
-    // Most shadow rays that meet nothing at all are settled by the accelerator's any-hit test at
-    // its usual cost; only those that meet something look at what it is, closest first.
+    // A shadow ray that meets an opaque triangle (one whose material has no alpha mask) is
+    // blocked, whatever the masked surfaces in front of it do: the accelerator's any-hit test over
+    // those triangles settles most blocked rays without a closest hit or a material.
+    if (opaque_triangles.size() == meshes.size() && accelerator->occluded_by(ray, opaque_triangles)) return true;
+    // Then only masked surfaces can block it. Most shadow rays that meet nothing at all are
+    // settled by the any-hit test at its usual cost; only those that meet something look at
+    // what it is, closest first.
     if (!accelerator->occluded(ray)) return false;
     Ray r = ray;
     for (int crossing = 0;; ++crossing) {

@@ -392,6 +392,13 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     scene.accelerator->build(scene.meshes);
     scene.has_alpha_masks = std::any_of(scene.materials.begin(), scene.materials.end(),
                                         [](const std::unique_ptr<Material>& m) { return m->alpha_mask != nullptr; });
+    if (scene.has_alpha_masks) {
+        for (const TriangleMesh& mesh : scene.meshes) {
+            std::vector<std::uint8_t>& opaque = scene.opaque_triangles.emplace_back(mesh.triangles.size());
+            for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+                opaque[t] = scene.materials[mesh.face_materials[t]]->alpha_mask == nullptr ? 1 : 0;
+        }
+    }
     scene.effects = compute_scene_effects(scene);
     scene.texture_footprints =
         scene.effects.textures && scene.camera && registry.texture_layouts_use_footprint(&texture_settings);

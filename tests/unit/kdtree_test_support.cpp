@@ -202,6 +202,13 @@ Conformance compare_with_brute_force(const AcceleratorUnderTest& under_test, con
     const float scene_size = bounds.empty() ? 1.0f : glm::length(bounds.diagonal());
 
     PCG32 random(seed, 13);
+    // For occluded_by: each triangle counted or looked through by a coin of its own stream.
+    PCG32 coins(seed, 14);
+    TriangleFlags counted;
+    for (const TriangleMesh& mesh : meshes) {
+        std::vector<std::uint8_t>& flags = counted.emplace_back(mesh.triangles.size());
+        for (std::uint8_t& flag : flags) flag = static_cast<std::uint8_t>(coins.next_below(2));
+    }
     Conformance result;
     auto report = [&](const std::string& what) {
         if (++result.mismatches <= 5) result.report += what + "\n";
@@ -228,6 +235,10 @@ Conformance compare_with_brute_force(const AcceleratorUnderTest& under_test, con
         if (blocked != tested->occluded(shadow))
             report("occluded, ray " + std::to_string(i) + ": " + describe_ray(shadow) + ": bruteforce " +
                    (blocked ? "true" : "false") + ", " + accelerator + " " + (blocked ? "false" : "true"));
+        const bool blocked_by = brute_force->occluded_by(shadow, counted);
+        if (blocked_by != tested->occluded_by(shadow, counted))
+            report("occluded_by, ray " + std::to_string(i) + ": " + describe_ray(shadow) + ": bruteforce " +
+                   (blocked_by ? "true" : "false") + ", " + accelerator + " " + (blocked_by ? "false" : "true"));
         if (expected && i % 8 < 2) {
             const auto shortened_expected = brute_force->intersect(shadow);
             const auto shortened_found = tested->intersect(shadow);

@@ -59,7 +59,8 @@ struct Conformance {
 };
 
 // Builds `accelerator` and bruteforce over the meshes and compares, for every ray, intersect
-// (no hit, or the same mesh, triangle and t bits) and occluded with a random tmax.
+// (no hit, or the same mesh, triangle and t bits), and occluded and occluded_by (half the
+// triangles counted, chosen by coin) with a random tmax.
 Conformance compare_with_brute_force(const AcceleratorUnderTest& accelerator, const std::vector<TriangleMesh>& meshes,
                                      const std::vector<Ray>& rays, std::uint64_t seed);
 

@@ -111,6 +111,39 @@ TEST_CASE("kdtree: a dense soup of crossing random triangles (100000 rays)", "[u
     check_conformance("soup", meshes, rays, 13);
 }
 
+TEST_CASE("occluded_by: the default walk of closest hits answers as bruteforce's any-hit over the counted triangles", "[unit][kdtree]") {
+    // The accelerators without a walk of their own (the benchmark's Embree) use Accelerator's
+    // default; bruteforce overrides it with an any-hit loop, as the trees do. Random rays through
+    // a dense soup, half its triangles counted; then none counted (nothing blocks) and all
+    // counted (occluded's answer).
+    const std::vector<TriangleMesh> meshes{random_soup(200, 0.3f, 20), random_soup(60, 0.05f, 21)};
+    const auto brute_force = full_registry().make_accelerator("bruteforce", "test");
+    brute_force->build(meshes);
+    PCG32 random(22, 23);
+    TriangleFlags half, none, all;
+    for (const TriangleMesh& mesh : meshes) {
+        half.emplace_back(mesh.triangles.size());
+        for (std::uint8_t& flag : half.back()) flag = static_cast<std::uint8_t>(random.next_below(2));
+        none.emplace_back(mesh.triangles.size(), 0);
+        all.emplace_back(mesh.triangles.size(), 1);
+    }
+    int blocked = 0, differ = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 origin(random.next_float(), random.next_float(), random.next_float());  // inside the soup
+        Ray ray{origin, ch01::sample_uniform_sphere(Vec2(random.next_float(), random.next_float()))};
+        ray.tmax = 2.0f * random.next_float();
+        const bool any_hit = brute_force->occluded_by(ray, half);
+        blocked += any_hit;
+        differ += any_hit != brute_force->Accelerator::occluded_by(ray, half);
+        CHECK_FALSE(brute_force->occluded_by(ray, none));
+        CHECK(brute_force->occluded_by(ray, all) == brute_force->occluded(ray));
+    }
+    CHECK(differ == 0);
+    INFO(blocked << " of 20000 rays blocked");
+    CHECK(blocked > 2000);  // the rays met counted triangles often enough to test the walk
+    CHECK(blocked < 18000);
+}
+
 TEST_CASE("kdtree: a planar grid lying in a split plane, with rays in it and from it (150000 rays)", "[unit][kdtree]") {
     // The grid at z = 0 crosses a sphere; walls stand on it with their lower edges in z = 0.
     std::vector<TriangleMesh> meshes{planar_grid(8, 0.0f), icosphere(1, 0.5f)};

@@ -78,7 +78,8 @@ TraversalCounts KdTreeAccelerator::count_traversal(const Ray& ray) const {
     return counts;
 }
 
-bool KdTreeAccelerator::occluded(const Ray& ray) const {
+template <typename Counts>
+bool KdTreeAccelerator::any_hit(const Ray& ray, Counts&& counts) const {
     const std::optional<Walk> walk = start_walk(tree_, ray);
     if (!walk) return false;
     const RayShear shear(ray.direction);
@@ -86,6 +87,7 @@ bool KdTreeAccelerator::occluded(const Ray& ray) const {
     NoCounting counter;
     traverse(tree_, ray, *walk, counter, [&](const KdTreeNode& leaf) {
         for_each_triangle(tree_, leaf, vertices_, [&](std::uint32_t triangle) {
+            if (!counts(triangle)) return true;  // looked through
             const TriangleVertices& v = vertices_[triangle];
             // A hit counts, as in brute force, if the ray also meets its mesh's box.
             found = intersect_triangle(ray, shear, v.p0, v.p1, v.p2) && blocks(ray, *walk, triangle);
@@ -94,6 +96,14 @@ bool KdTreeAccelerator::occluded(const Ray& ray) const {
         return found ? -std::numeric_limits<float>::infinity() : ray.tmax;
     });
     return found;
+}
+
+bool KdTreeAccelerator::occluded(const Ray& ray) const {
+    return any_hit(ray, [](std::uint32_t) { return true; });
+}
+
+bool KdTreeAccelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
+    return any_hit(ray, [&](std::uint32_t triangle) { return flagged(counted, triangle); });
 }
 
 }  // namespace freezeray::ch06

@@ -104,7 +104,8 @@ ch06::TraversalCounts KdTreeSimdAccelerator::count_traversal(const Ray& ray) con
     return counts;
 }
 
-bool KdTreeSimdAccelerator::occluded(const Ray& ray) const {
+template <typename Counts>
+bool KdTreeSimdAccelerator::any_hit(const Ray& ray, Counts&& counts) const {
     const std::optional<ch06::Walk> walk = ch06::start_walk(packets_.tree(), ray);
     if (!walk) return false;
     const RayShear shear(ray.direction);
@@ -114,12 +115,20 @@ bool KdTreeSimdAccelerator::occluded(const Ray& ray) const {
     ch06::traverse(packets_.tree(), ray, *walk, counter, [&](const ch06::KdTreeNode& leaf) {
         for_each_hit_in_leaf(packets_, kernel_->test, scalar_.triangle_vertices(), leaf, ray, shear, packet_ray, counter,
                              [&](std::uint32_t triangle, const TriangleHit&) {
-                                 found = scalar_.blocks(ray, *walk, triangle);
+                                 found = counts(triangle) && scalar_.blocks(ray, *walk, triangle);
                                  return !found;  // the first blocking hit answers the question
                              });
         return found ? -std::numeric_limits<float>::infinity() : ray.tmax;
     });
     return found;
+}
+
+bool KdTreeSimdAccelerator::occluded(const Ray& ray) const {
+    return any_hit(ray, [](std::uint32_t) { return true; });
+}
+
+bool KdTreeSimdAccelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
+    return any_hit(ray, [&](std::uint32_t triangle) { return scalar_.flagged(counted, triangle); });
 }
 
 std::vector<std::pair<std::string, std::string>> KdTreeSimdAccelerator::describe() const {

@@ -7,12 +7,16 @@
 #include "freezeray/ray.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace freezeray {
+
+// One flag per triangle of each mesh: flags[m][t] for meshes[m].triangles[t].
+using TriangleFlags = std::vector<std::vector<std::uint8_t>>;
 
 class Accelerator {
 public:
@@ -27,6 +31,13 @@ public:
     // True if anything lies on the ray with t in (0, ray.tmax): the cheaper shadow-ray query.
     virtual bool occluded(const Ray& ray) const = 0;
 
+    // True if a triangle whose flag is set in `counted` lies on the ray with t in (0, ray.tmax);
+    // the others are looked through. Scene::occluded_through_cutouts asks it with the triangles
+    // whose material has no alpha mask: one of those on the ray blocks it, whatever the masked
+    // surfaces do. This default follows the closest hits one behind the other; the KD-trees
+    // test the flag in their any-hit walk instead.
+    virtual bool occluded_by(const Ray& ray, const TriangleFlags& counted) const;
+
     // What the accelerator built, as (name, value) lines for `info` and `render` to print
     // (sizes, build time); none by default.
     virtual std::vector<std::pair<std::string, std::string>> describe() const { return {}; }
@@ -35,6 +46,10 @@ public:
     // them (the ray benchmark's memory column); nothing by default.
     virtual std::optional<std::size_t> memory_bytes() const { return std::nullopt; }
 };
+
+// The ray that continues `ray` behind `hit`: the same direction, from just beyond the surface
+// (offset as every spawned ray is), as far as `ray` still had to go.
+Ray continue_behind(const Ray& ray, const Hit& hit);
 
 // Fills in a Hit from a triangle, its barycentrics and the ray distance: interpolated position
 // (with its error bound), normals and uv. Shared by every accelerator.
@@ -49,6 +64,7 @@ public:
     void build(const std::vector<TriangleMesh>& meshes) override;
     std::optional<Hit> intersect(const Ray& ray) const override;
     bool occluded(const Ray& ray) const override;
+    bool occluded_by(const Ray& ray, const TriangleFlags& counted) const override;
 
     // The boxes it culls meshes by, one per mesh (an accelerator that must agree with brute force
     // to the bit replays this culling).

@@ -84,6 +84,9 @@ public:
         return has_alpha_masks ? occluded_through_cutouts(ray) : accelerator->occluded(ray);
     }
     bool has_alpha_masks = false;               // some material has an alpha mask (set by load_scene)
+    // With alpha masks: per mesh and triangle, 1 where the triangle's material has no mask, so
+    // that it blocks every ray that meets it (set by load_scene; see occluded_through_cutouts).
+    TriangleFlags opaque_triangles;
     // The scene has textures, a camera, and a texture layout that filters by footprint
     // (Registry::texture_layouts_use_footprint; set by load_scene). Chapters 02-07's layout looks
     // up at the point, so their hits skip the footprint's work.

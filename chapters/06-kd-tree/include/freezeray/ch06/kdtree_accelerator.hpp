@@ -37,6 +37,8 @@ public:
     // nothing.
     std::optional<Hit> intersect(const Ray& ray) const override;
     bool occluded(const Ray& ray) const override;
+    // occluded's walk, with the triangles whose flag is clear skipped before their test.
+    bool occluded_by(const Ray& ray, const TriangleFlags& counted) const override;
 
     // What intersect(ray) does, counted (the traversal-cost integrator's images).
     TraversalCounts count_traversal(const Ray& ray) const override;
@@ -58,11 +60,19 @@ public:
     bool blocks(const Ray& ray, const Walk& walk, std::uint32_t triangle) const {
         return ray_intersects_bounds(ray, walk.inverse_direction, brute_force_.mesh_bounds()[ids_[triangle].mesh]);
     }
+    // The flag of `triangle` (a global index) in per-mesh flags.
+    bool flagged(const TriangleFlags& flags, std::uint32_t triangle) const {
+        const TriangleId& id = ids_[triangle];
+        return flags[id.mesh][id.triangle] != 0;
+    }
 
 private:
     // intersect, telling `counter` of its work (kdtree_traversal.cpp, the only user).
     template <typename Counter>
     std::optional<Hit> closest_hit(const Ray& ray, Counter& counter) const;
+    // occluded and occluded_by: whether a triangle for which counts(global index) holds blocks the ray.
+    template <typename Counts>
+    bool any_hit(const Ray& ray, Counts&& counts) const;
 
     KdTreeSettings settings_;
     const std::vector<TriangleMesh>* meshes_ = nullptr;

@@ -24,6 +24,8 @@ public:
     // As KdTreeAccelerator: the same triangle, the same t bits.
     std::optional<Hit> intersect(const Ray& ray) const override;
     bool occluded(const Ray& ray) const override;
+    // occluded's walk, hits on triangles whose flag is clear looked through.
+    bool occluded_by(const Ray& ray, const TriangleFlags& counted) const override;
     // What intersect(ray) does, counted; a packet tested counts as one triangle test.
     ch06::TraversalCounts count_traversal(const Ray& ray) const override;
 
@@ -38,6 +40,10 @@ public:
 private:
     template <typename Counter>
     std::optional<Hit> closest_hit(const Ray& ray, Counter& counter) const;
+    // occluded and occluded_by: whether a hit on a triangle for which counts(global index)
+    // holds blocks the ray.
+    template <typename Counts>
+    bool any_hit(const Ray& ray, Counts&& counts) const;
 
     KdTreeSimdSettings settings_;
     const PacketKernel* kernel_;
