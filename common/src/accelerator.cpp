@@ -72,19 +72,15 @@ Ray continue_behind(const Ray& ray, const Hit& hit) {
 }
 
 bool Accelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
-    // Closest hit after closest hit: each one either counts, or the ray goes on behind it. A ray
-    // that meets more than this many triangles not counted, one behind the other, is taken as
-    // blocked, as Scene::MaxCutoutCrossings takes it.
-    constexpr int MaxCrossings = 64;
+    // Closest hit after closest hit: each one either counts, or the ray goes on behind it.
     Ray r = ray;
-    for (int crossing = 0; crossing <= MaxCrossings; ++crossing) {
+    for (int crossing = 0;; ++crossing) {
         const std::optional<Hit> hit = intersect(r);
         if (!hit) return false;
-        if (counted[hit->mesh][hit->triangle] != 0) return true;
+        if (crossing == MaxCrossingsBehind || counted[hit->mesh][hit->triangle] != 0) return true;
         r = continue_behind(r, *hit);
         if (!(r.tmax > 0.0f)) return false;
     }
-    return true;
 }
 
 bool clip_ray_to_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds, float& t_enter,
@@ -143,14 +139,15 @@ std::optional<Hit> BruteForceAccelerator::intersect(const Ray& ray) const {
     return make_hit(*meshes_, closest_mesh, closest_triangle, *closest);
 }
 
-bool BruteForceAccelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
+template <typename Counts>
+bool BruteForceAccelerator::any_hit(const Ray& ray, Counts&& counts) const {
     const RayShear shear(ray.direction);
     const Vec3 inverse_direction = 1.0f / ray.direction;
     for (std::uint32_t m = 0; m < meshes_->size(); ++m) {
         if (!ray_intersects_bounds(ray, inverse_direction, mesh_bounds_[m])) continue;
         const TriangleMesh& mesh = (*meshes_)[m];
         for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-            if (counted[m][t] == 0) continue;
+            if (!counts(m, t)) continue;  // looked through
             const auto& idx = mesh.triangles[t];
             if (intersect_triangle(ray, shear, mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]))
                 return true;
@@ -160,17 +157,11 @@ bool BruteForceAccelerator::occluded_by(const Ray& ray, const TriangleFlags& cou
 }
 
 bool BruteForceAccelerator::occluded(const Ray& ray) const {
-    const RayShear shear(ray.direction);
-    const Vec3 inverse_direction = 1.0f / ray.direction;
-    for (std::uint32_t m = 0; m < meshes_->size(); ++m) {
-        if (!ray_intersects_bounds(ray, inverse_direction, mesh_bounds_[m])) continue;
-        const TriangleMesh& mesh = (*meshes_)[m];
-        for (const auto& idx : mesh.triangles) {
-            if (intersect_triangle(ray, shear, mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]))
-                return true;
-        }
-    }
-    return false;
+    return any_hit(ray, [](std::uint32_t, std::size_t) { return true; });
+}
+
+bool BruteForceAccelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
+    return any_hit(ray, [&](std::uint32_t mesh, std::size_t triangle) { return counted[mesh][triangle] != 0; });
 }
 
 }  // namespace freezeray

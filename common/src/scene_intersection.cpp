@@ -5,7 +5,6 @@
 
 namespace freezeray {
 
-
 // BOOK(alpha-cutout)
 std::optional<Hit> Scene::intersect_through_cutouts(const Ray& ray) const {
     Ray r = ray;

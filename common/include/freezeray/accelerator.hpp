@@ -51,6 +51,10 @@ public:
 // (offset as every spawned ray is), as far as `ray` still had to go.
 Ray continue_behind(const Ray& ray, const Hit& hit);
 
+// The most surfaces a ray is continued behind, one after the other; a ray that meets more is
+// taken to stop at the last (Accelerator::occluded_by's default, and the scene's cut-outs).
+inline constexpr int MaxCrossingsBehind = 64;
+
 // Fills in a Hit from a triangle, its barycentrics and the ray distance: interpolated position
 // (with its error bound), normals and uv. Shared by every accelerator.
 struct TriangleHit;
@@ -73,6 +77,10 @@ public:
     std::optional<std::size_t> memory_bytes() const override { return mesh_bounds_.size() * sizeof(Bounds3); }
 
 private:
+    // occluded and occluded_by: whether a triangle for which counts(mesh, triangle) holds lies on the ray.
+    template <typename Counts>
+    bool any_hit(const Ray& ray, Counts&& counts) const;
+
     const std::vector<TriangleMesh>* meshes_ = nullptr;
     std::vector<Bounds3> mesh_bounds_;
 };
