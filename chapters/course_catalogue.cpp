@@ -46,6 +46,7 @@ const std::vector<CatalogueEntry>& course_catalogue() {
         {CapabilityKind::LightSampler, "power", 3},
         {CapabilityKind::LightSampler, "uniform", 3},
         {CapabilityKind::LightSampler, "bvh", 10},
+        {CapabilityKind::LightSampler, "bvh-tree", 10},
     };
     return catalogue;
 }

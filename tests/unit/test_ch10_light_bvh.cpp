@@ -1,14 +1,17 @@
-// Chapter 10's light BVH: the probability it reports for a choice is the one probability() gives
-// (bit for bit), the probabilities of all lights sum to one, the choices follow them (chi-square),
-// a light gets probability 0 only where it sends no light at all, and the cone and bounds it
-// builds contain what they bound. Three statistical tests (the chi-square tests over lights, at
-// unit_test_alpha each; tests/STATISTICS.md counts them); the rest is deterministic.
+// Chapter 10's light BVH, alone and in its defensive mixture with uniform choice (`bvh`): the
+// probability each reports for a choice is the one probability() gives (bit for bit), the
+// probabilities of all lights sum to one, the choices follow them (chi-square), a light gets
+// probability 0 only where it sends no light at all, the mixture keeps every light at least its
+// uniform share, and the cone and bounds the tree builds contain what they bound. Six statistical
+// tests (the chi-square tests over lights, three per sampler, at unit_test_alpha each;
+// tests/STATISTICS.md counts them); the rest is deterministic.
 #include "freezeray/ch03/area_light.hpp"
 #include "freezeray/ch03/directional_light.hpp"
 #include "freezeray/ch03/environment_light.hpp"
 #include "freezeray/ch03/point_light.hpp"
 #include "freezeray/ch03/spot_light.hpp"
 #include "freezeray/ch10/bvh_light_sampler.hpp"
+#include "freezeray/ch10/defensive_light_sampler.hpp"
 #include "freezeray/ch10/light_bounds.hpp"
 #include "freezeray/random.hpp"
 
@@ -71,6 +74,20 @@ struct ManyLights {
     }
 };
 
+// The two samplers chapter 10 registers: the tree alone (`bvh-tree`) and the tree with its
+// defensive share of uniform choices (`bvh`).
+struct NamedSampler {
+    const char* name;
+    std::unique_ptr<LightSampler> sampler;
+};
+
+std::vector<NamedSampler> chapter10_samplers(const std::vector<std::unique_ptr<Light>>& lights) {
+    std::vector<NamedSampler> samplers;
+    samplers.push_back({"bvh-tree", std::make_unique<BvhLightSampler>(lights)});
+    samplers.push_back({"bvh", std::make_unique<DefensiveLightSampler>(std::make_unique<BvhLightSampler>(lights), lights, DefensiveShare)});
+    return samplers;
+}
+
 ShadingPoint random_point(PCG32& random) {
     ShadingPoint p;
     p.position = uniform_in_box(random, Vec3(-14.0f, -4.0f, -14.0f), Vec3(14.0f, 8.0f, 14.0f));
@@ -83,22 +100,24 @@ ShadingPoint random_point(PCG32& random) {
 TEST_CASE("the light BVH reports the probability of each choice exactly as probability() gives it", "[unit][ch10]") {
     for (bool infinite : {false, true}) {
         const ManyLights scene(150, infinite, 11);
-        const BvhLightSampler sampler(scene.lights);
-        PCG32 random(3, 5);
-        int chosen = 0;
-        for (int k = 0; k < 2000; ++k) {
-            const ShadingPoint point = random_point(random);
-            for (int j = 0; j < 20; ++j) {
-                const float u = random.next_float();
-                const std::optional<LightChoice> choice = sampler.sample(point, u);
-                if (!choice) continue;
-                ++chosen;
-                INFO("point (" << point.position.x << ", " << point.position.y << ", " << point.position.z << "), u " << u);
-                REQUIRE(choice->probability > 0.0f);
-                REQUIRE(choice->probability == sampler.probability(point, *choice->light));  // bit for bit
+        for (const auto& [name, sampler] : chapter10_samplers(scene.lights)) {
+            PCG32 random(3, 5);
+            int chosen = 0;
+            for (int k = 0; k < 2000; ++k) {
+                const ShadingPoint point = random_point(random);
+                for (int j = 0; j < 20; ++j) {
+                    const float u = random.next_float();
+                    const std::optional<LightChoice> choice = sampler->sample(point, u);
+                    if (!choice) continue;
+                    ++chosen;
+                    INFO(name << ": point (" << point.position.x << ", " << point.position.y << ", " << point.position.z << "), u " << u);
+                    REQUIRE(choice->probability > 0.0f);
+                    REQUIRE(choice->probability == sampler->probability(point, *choice->light));  // bit for bit
+                }
             }
+            INFO(name);
+            CHECK(chosen > 30000);
         }
-        CHECK(chosen > 30000);
     }
 }
 
@@ -130,40 +149,75 @@ TEST_CASE("the light BVH's probabilities of all lights at a point sum to at most
 
 TEST_CASE("the light BVH chooses each light as often as the probability it reports (chi-square over lights)", "[unit][ch10]") {
     // Three shading points (inside the cloud of lights, below it, beside it with the infinite
-    // lights), 400,000 choices each, one chi-square test each at unit_test_alpha: a cell per
-    // light, and one for the walks that choose nothing (expected N (1 - the probabilities' sum)),
-    // cells expecting fewer than 5 choices pooled.
+    // lights), 400,000 choices each, for the tree and for its defensive mixture: one chi-square
+    // test each at unit_test_alpha, a cell per light and one for the walks that choose nothing
+    // (expected N (1 - the probabilities' sum)), cells expecting fewer than 5 choices pooled.
     const ManyLights scene(200, true, 13);
-    const BvhLightSampler sampler(scene.lights);
     const ShadingPoint points[] = {{Vec3(1.0f, 2.0f, -3.0f), glm::normalize(Vec3(0.2f, 1.0f, 0.1f))},
                                    {Vec3(0.0f, -3.0f, 4.0f), Vec3(0.0f, 1.0f, 0.0f)},
                                    {Vec3(13.0f, 1.0f, 0.0f), Vec3(0.0f)}};
     constexpr int choices = 400000;
     std::uint64_t seed = 1001;
-    for (const ShadingPoint& point : points) {
-        PCG32 random(seed++, 3);
-        const std::size_t none = scene.lights.size();  // the cell of walks that choose nothing
-        std::vector<double> observed(none + 1, 0.0), expected(none + 1, 0.0);
-        for (int k = 0; k < choices; ++k) {
-            const std::optional<LightChoice> choice = sampler.sample(point, random.next_float());
-            observed[choice ? choice->light->index : none] += 1.0;
+    for (const auto& [name, sampler] : chapter10_samplers(scene.lights)) {
+        for (const ShadingPoint& point : points) {
+            PCG32 random(seed++, 3);
+            const std::size_t none = scene.lights.size();  // the cell of walks that choose nothing
+            std::vector<double> observed(none + 1, 0.0), expected(none + 1, 0.0);
+            for (int k = 0; k < choices; ++k) {
+                const std::optional<LightChoice> choice = sampler->sample(point, random.next_float());
+                observed[choice ? choice->light->index : none] += 1.0;
+            }
+            double sum = 0.0;
+            for (const auto& light : scene.lights) {
+                expected[light->index] = choices * static_cast<double>(sampler->probability(point, *light));
+                sum += sampler->probability(point, *light);
+            }
+            // A sum that is 1 but for rounding expects well under one walk there: the cell is pooled.
+            expected[none] = choices * std::max(0.0, 1.0 - sum);
+            std::uint64_t in_empty_cells = 0;  // chosen where its probability is 0
+            const auto [statistic, cells] = stats::pooled_statistic(observed, expected, 5.0, in_empty_cells);
+            INFO(name << ": point (" << point.position.x << ", " << point.position.y << ", " << point.position.z
+                      << "), sum of probabilities " << sum);
+            REQUIRE(in_empty_cells == 0u);
+            REQUIRE(cells > 50);
+            const double p_value = stats::chi_square_survival(statistic, cells - 1);
+            INFO("chi^2 = " << statistic << " over " << cells << " cells, p = " << p_value);
+            CHECK(p_value > stats::unit_test_alpha);
         }
-        double sum = 0.0;
-        for (const auto& light : scene.lights) {
-            expected[light->index] = choices * static_cast<double>(sampler.probability(point, *light));
-            sum += sampler.probability(point, *light);
-        }
-        // A sum that is 1 but for rounding expects well under one walk there: the cell is pooled.
-        expected[none] = choices * std::max(0.0, 1.0 - sum);
-        std::uint64_t in_empty_cells = 0;  // chosen where its probability is 0
-        const auto [statistic, cells] = stats::pooled_statistic(observed, expected, 5.0, in_empty_cells);
-        INFO("sum of probabilities " << sum);
-        REQUIRE(in_empty_cells == 0u);
-        REQUIRE(cells > 50);
-        const double p_value = stats::chi_square_survival(statistic, cells - 1);
-        INFO("chi^2 = " << statistic << " over " << cells << " cells, p = " << p_value);
-        CHECK(p_value > stats::unit_test_alpha);
     }
+}
+
+TEST_CASE("the defensive mixture keeps every light at least its uniform share", "[unit][ch10]") {
+    // p = (1 - share) p_tree + share / N for every light, wherever the tree leaves it out (seen
+    // from behind, outside a spot's cone, the dark light); the probabilities sum to the tree's
+    // sum mixed with 1; share 0 gives the tree's probabilities to the bit; a share outside [0, 1)
+    // is refused.
+    const ManyLights scene(120, true, 15);
+    const BvhLightSampler tree(scene.lights);
+    const DefensiveLightSampler mixture(std::make_unique<BvhLightSampler>(scene.lights), scene.lights, DefensiveShare);
+    const DefensiveLightSampler none(std::make_unique<BvhLightSampler>(scene.lights), scene.lights, 0.0f);
+    const float uniform = 1.0f / static_cast<float>(scene.lights.size());
+    PCG32 random(21, 3);
+    int left_out_by_tree = 0;
+    for (int k = 0; k < 500; ++k) {
+        const ShadingPoint point = random_point(random);
+        double tree_sum = 0.0, mixture_sum = 0.0;
+        for (const auto& light : scene.lights) {
+            const float p_tree = tree.probability(point, *light), p = mixture.probability(point, *light);
+            INFO("light " << light->index << " at point (" << point.position.x << ", " << point.position.y << ", "
+                          << point.position.z << ")");
+            REQUIRE(p == (1.0f - DefensiveShare) * p_tree + DefensiveShare * uniform);
+            REQUIRE(p >= DefensiveShare * uniform);
+            REQUIRE(none.probability(point, *light) == p_tree);
+            left_out_by_tree += p_tree == 0.0f ? 1 : 0;
+            tree_sum += p_tree;
+            mixture_sum += p;
+        }
+        CHECK(mixture_sum == Approx((1.0 - DefensiveShare) * tree_sum + DefensiveShare).epsilon(1e-5));
+    }
+    CHECK(left_out_by_tree > 1000);  // the case happens
+    CHECK_THROWS(DefensiveLightSampler(std::make_unique<BvhLightSampler>(scene.lights), scene.lights, 1.0f));
+    CHECK_THROWS(DefensiveLightSampler(std::make_unique<BvhLightSampler>(scene.lights), scene.lights, -0.1f));
 }
 
 TEST_CASE("the light BVH gives a light probability 0 only where it sends no light at all", "[unit][ch10]") {

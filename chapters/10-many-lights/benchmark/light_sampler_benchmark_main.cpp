@@ -4,7 +4,7 @@
 // the image's order; each pass draws one choice per point with a fixed stream of numbers, after
 // a warm-up pass; the median pass is reported. The tree's build time is reported apart.
 //
-//   light-sampler-benchmark SCENE [--samplers power,uniform,bvh] [--reps N] [--width W --height H] [--json]
+//   light-sampler-benchmark SCENE [--samplers power,uniform,bvh-tree,bvh] [--reps N] [--width W --height H] [--json]
 //                           [--choice-map FILE.png --map-sampler NAME]
 //
 // --choice-map draws which lights a sampler chooses where: each light gets the colour of its
@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
     CLI::App app{"light-sampler-benchmark: nanoseconds per light choice of each light sampler, at the first hits of a "
                  "scene's camera rays, measured side by side in one process"};
     std::string scene_path;
-    std::vector<std::string> samplers{"power", "uniform", "bvh"};
+    std::vector<std::string> samplers{"power", "uniform", "bvh-tree", "bvh"};
     int repetitions = 5, width = 0, height = 0;
     bool json = false;
     std::string map_path, map_sampler = "bvh";

@@ -5,7 +5,8 @@
 
 namespace freezeray {
 
-// Registers chapter 10's light sampler ("bvh") and makes it the default light sampler. Call after
+// Registers chapter 10's light samplers ("bvh", the tree with a defensive share of uniform
+// choices, and "bvh-tree", the tree alone) and makes "bvh" the default light sampler. Call after
 // the registrations of the chapters before it.
 void register_chapter10(Registry& registry);
 
