@@ -73,14 +73,7 @@ Ray continue_behind(const Ray& ray, const Hit& hit) {
 
 bool Accelerator::occluded_by(const Ray& ray, const TriangleFlags& counted) const {
     // Closest hit after closest hit: each one either counts, or the ray goes on behind it.
-    Ray r = ray;
-    for (int crossing = 0;; ++crossing) {
-        const std::optional<Hit> hit = intersect(r);
-        if (!hit) return false;
-        if (crossing == MaxCrossingsBehind || counted[hit->mesh][hit->triangle] != 0) return true;
-        r = continue_behind(r, *hit);
-        if (!(r.tmax > 0.0f)) return false;
-    }
+    return first_hit_where(*this, ray, [&](const Hit& hit) { return counted[hit.mesh][hit.triangle] != 0; }).has_value();
 }
 
 bool clip_ray_to_bounds(const Ray& ray, const Vec3& inverse_direction, const Bounds3& bounds, float& t_enter,

@@ -7,17 +7,8 @@ namespace freezeray {
 
 // BOOK(alpha-cutout)
 std::optional<Hit> Scene::intersect_through_cutouts(const Ray& ray) const {
-    Ray r = ray;
-    for (int crossing = 0;; ++crossing) {
-        std::optional<Hit> hit = accelerator->intersect(r);
-        if (!hit || crossing == MaxCutoutCrossings || !materials[hit->material]->is_cut_out(*hit)) {
-            // The distance along the ray the caller traced, not along the last piece of it.
-            if (hit && crossing > 0) hit->t = glm::dot(hit->position - ray.origin, ray.direction);
-            return hit;
-        }
-        r = continue_behind(r, *hit);
-        if (!(r.tmax > 0.0f)) return std::nullopt;
-    }
+    // The first surface that is not a hole at the hit; its t along the ray the caller traced.
+    return first_hit_where(*accelerator, ray, [&](const Hit& hit) { return !material(hit).is_cut_out(hit); });
 }
 
 bool Scene::occluded_through_cutouts(const Ray& ray) const {
@@ -29,14 +20,7 @@ bool Scene::occluded_through_cutouts(const Ray& ray) const {
     // settled by the any-hit test at its usual cost; only those that meet something look at
     // what it is, closest first.
     if (!accelerator->occluded(ray)) return false;
-    Ray r = ray;
-    for (int crossing = 0;; ++crossing) {
-        const std::optional<Hit> hit = accelerator->intersect(r);
-        if (!hit) return false;
-        if (crossing == MaxCutoutCrossings || !materials[hit->material]->is_cut_out(*hit)) return true;
-        r = continue_behind(r, *hit);
-        if (!(r.tmax > 0.0f)) return false;
-    }
+    return intersect_through_cutouts(ray).has_value();
 }
 // END BOOK
 

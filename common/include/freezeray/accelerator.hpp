@@ -55,6 +55,28 @@ Ray continue_behind(const Ray& ray, const Hit& hit);
 // taken to stop at the last (Accelerator::occluded_by's default, and the scene's cut-outs).
 inline constexpr int MaxCrossingsBehind = 64;
 
+// BOOK(first-hit-where)
+// The first surface along `ray` at which stops(hit) holds, found closest hit after closest hit,
+// the ray continued behind each surface that does not stop it; the surface met after
+// MaxCrossingsBehind crossings stops it whatever it is. Its t is measured along `ray`, not along
+// the last piece of it. Nothing when the ray runs out first. Accelerator::occluded_by's default
+// and the scene's cut-outs (Scene::intersect, Scene::occluded) walk rays so.
+template <typename Stops>
+std::optional<Hit> first_hit_where(const Accelerator& accelerator, const Ray& ray, Stops&& stops) {
+    Ray r = ray;
+    for (int crossing = 0;; ++crossing) {
+        std::optional<Hit> hit = accelerator.intersect(r);
+        if (!hit) return std::nullopt;
+        if (crossing == MaxCrossingsBehind || stops(*hit)) {
+            if (crossing > 0) hit->t = glm::dot(hit->position - ray.origin, ray.direction);
+            return hit;
+        }
+        r = continue_behind(r, *hit);
+        if (!(r.tmax > 0.0f)) return std::nullopt;
+    }
+}
+// END BOOK
+
 // Fills in a Hit from a triangle, its barycentrics and the ray distance: interpolated position
 // (with its error bound), normals and uv. Shared by every accelerator.
 struct TriangleHit;

@@ -91,8 +91,6 @@ public:
     // (Registry::texture_layouts_use_footprint; set by load_scene). Chapters 02-07's layout looks
     // up at the point, so their hits skip the footprint's work.
     bool texture_footprints = false;
-    // The most cut-out surfaces one ray passes through; a ray that meets more stops at the last.
-    static constexpr int MaxCutoutCrossings = MaxCrossingsBehind;
     const Material& material(const Hit& hit) const { return *materials[hit.material]; }
 
     // Radiance arriving along a ray that leaves the scene: the environment's, or black.

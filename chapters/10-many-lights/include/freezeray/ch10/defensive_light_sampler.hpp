@@ -37,8 +37,6 @@ public:
     float probability(const ShadingPoint& point, const Light& light) const override;
     std::vector<std::string> description() const override;
 
-    float share() const { return share_; }
-
 private:
     // (1 - share) p_primary + share p_uniform, computed in one order wherever it is needed.
     float mixture(float primary_probability, float uniform_probability) const {
