@@ -73,6 +73,12 @@ TEST_CASE("the light sampler chooses by power, never a dark light, and uniformly
     const FixedLightSampler uniform(lights, LightSelection::Uniform);
     for (const auto& light : lights) CHECK(uniform.probability(*light) == 0.25f);
     CHECK(uniform.sample(0.3f)->light == lights[1].get());  // even the dark one
+    // Light i takes u in [i / n, (i + 1) / n), the last one up to the float just below 1.
+    for (int i = 0; i < 4; ++i) {
+        CHECK(uniform.sample(0.25f * static_cast<float>(i))->light == lights[static_cast<std::size_t>(i)].get());
+        CHECK(uniform.sample(std::nextafter(0.25f * static_cast<float>(i + 1), 0.0f))->light == lights[static_cast<std::size_t>(i)].get());
+        CHECK(uniform.sample(0.25f * static_cast<float>(i))->probability == 0.25f);
+    }
 
     // Every light dark: uniform, rather than dividing by zero.
     std::vector<std::unique_ptr<Light>> dark;

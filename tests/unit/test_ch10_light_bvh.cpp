@@ -92,6 +92,12 @@ ShadingPoint random_point(PCG32& random) {
     ShadingPoint p;
     p.position = uniform_in_box(random, Vec3(-14.0f, -4.0f, -14.0f), Vec3(14.0f, 8.0f, 14.0f));
     if (random.next_float() < 0.8f) p.normal = uniform_direction(random);  // else a point without a surface
+    if (p.normal != Vec3(0.0f) && random.next_float() < 0.4f) {
+        // A glossy lobe, from nearly a mirror (alpha 0.001, where D falls to alpha^4 = 1e-12 of its
+        // peak away from the axis) to very rough.
+        p.lobe_axis = uniform_direction(random);
+        p.lobe_alpha = std::pow(10.0f, -3.0f + 3.0f * random.next_float());
+    }
     return p;
 }
 
@@ -148,14 +154,15 @@ TEST_CASE("the light BVH's probabilities of all lights at a point sum to at most
 }
 
 TEST_CASE("the light BVH chooses each light as often as the probability it reports (chi-square over lights)", "[unit][ch10]") {
-    // Three shading points (inside the cloud of lights, below it, beside it with the infinite
-    // lights), 400,000 choices each, for the tree and for its defensive mixture: one chi-square
+    // Four shading points (inside the cloud of lights, below it, beside it with the infinite
+    // lights, below it with a glossy lobe), 400,000 choices each, for the tree and for its defensive mixture: one chi-square
     // test each at unit_test_alpha, a cell per light and one for the walks that choose nothing
     // (expected N (1 - the probabilities' sum)), cells expecting fewer than 5 choices pooled.
     const ManyLights scene(200, true, 13);
     const ShadingPoint points[] = {{Vec3(1.0f, 2.0f, -3.0f), glm::normalize(Vec3(0.2f, 1.0f, 0.1f))},
                                    {Vec3(0.0f, -3.0f, 4.0f), Vec3(0.0f, 1.0f, 0.0f)},
-                                   {Vec3(13.0f, 1.0f, 0.0f), Vec3(0.0f)}};
+                                   {Vec3(13.0f, 1.0f, 0.0f), Vec3(0.0f)},
+                                   {Vec3(0.0f, -3.0f, 4.0f), Vec3(0.0f, 1.0f, 0.0f), glm::normalize(Vec3(0.3f, 1.0f, -0.4f)), 0.05f}};
     constexpr int choices = 400000;
     std::uint64_t seed = 1001;
     for (const auto& [name, sampler] : chapter10_samplers(scene.lights)) {
@@ -346,4 +353,56 @@ TEST_CASE("the light BVH with no lights, one light, and only infinite lights", "
     CHECK(infinite.sample(point, 0.2f)->light == sky[0].get());
     CHECK(infinite.sample(point, 0.7f)->light == sky[1].get());
     CHECK(infinite.probability(point, *sky[1]) == 0.5f);
+}
+
+TEST_CASE("a glossy lobe at the point weighs each cluster by the distribution's shape, and leaves none out", "[unit][ch10]") {
+    // lobe_factor's value where it is known exactly: 1 for a cluster on the lobe's axis, for one
+    // holding the point and for one whose bounding sphere reaches the axis; D(psi / 2) / D(0) for
+    // a point light psi from it (Trowbridge-Reitz: 1 / (cos^2 + sin^2 / alpha^2)^2 of psi / 2);
+    // alpha^4 straight behind.
+    const float alpha = 0.1f;
+    const ShadingPoint point{Vec3(0.0f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f), alpha};
+    auto bounds_at = [](Vec3 centre, float half_size) {
+        LightBounds b;
+        b.box.expand(centre - Vec3(half_size));
+        b.box.expand(centre + Vec3(half_size));
+        b.phi = 1.0f;
+        b.cos_theta_o = -1.0f;
+        b.cos_theta_e = 0.0f;
+        return b;
+    };
+    auto factor = [&](const LightBounds& b) {
+        LightClusterGroup group;
+        group.set(0, b);
+        return lobe_factor(group, point)[0];
+    };
+    CHECK(factor(bounds_at(Vec3(0.0f, 5.0f, 0.0f), 0.0f)) == 1.0f);
+    CHECK(factor(bounds_at(Vec3(0.2f, 0.1f, 0.0f), 1.0f)) == 1.0f);                     // holds the point
+    CHECK(factor(bounds_at(Vec3(2.0f, 4.0f, 0.0f), 1.5f)) == 1.0f);                     // reaches the axis
+    for (float psi_degrees : {5.0f, 20.0f, 60.0f, 120.0f}) {
+        const float psi = psi_degrees * Pi / 180.0f;
+        const double c = std::cos(psi / 2.0), s = std::sin(psi / 2.0);
+        const double expected = 1.0 / std::pow(c * c + s * s / (alpha * alpha), 2.0);
+        INFO(psi_degrees << " degrees from the axis");
+        CHECK(factor(bounds_at(Vec3(3.0f * std::sin(psi), 3.0f * std::cos(psi), 0.0f), 0.0f)) == Approx(expected).epsilon(1e-4));
+    }
+    CHECK(factor(bounds_at(Vec3(0.0f, -3.0f, 0.0f), 0.0f)) == Approx(std::pow(alpha, 4.0f)).epsilon(1e-3));
+
+    // Two equal point lights, one on the lobe's axis and one 90 degrees from it: the lobe moves
+    // the choice towards the first, and the second keeps a probability.
+    std::vector<std::unique_ptr<Light>> two;
+    two.push_back(std::make_unique<ch03::PointLight>(Vec3(0.0f, 4.0f, 0.0f), Spectrum(1.0f)));
+    two.push_back(std::make_unique<ch03::PointLight>(Vec3(4.0f, 0.5f, 0.0f), Spectrum(1.0f)));
+    for (std::size_t i = 0; i < two.size(); ++i) two[i]->index = static_cast<std::uint32_t>(i);
+    const BvhLightSampler pair(two);
+    ShadingPoint without = point;
+    without.lobe_alpha = 0.0f;
+    CHECK(pair.probability(point, *two[0]) > pair.probability(without, *two[0]));
+    CHECK(pair.probability(point, *two[0]) > 0.99f);
+    CHECK(pair.probability(point, *two[1]) > 0.0f);
+    // A mirror-like lobe facing away from both: they keep their probabilities, in the same order.
+    const ShadingPoint away{Vec3(0.0f), Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, -1.0f, 0.0f), 0.001f};
+    CHECK(pair.probability(away, *two[0]) > 0.0f);
+    CHECK(pair.probability(away, *two[1]) > 0.0f);
+    CHECK(pair.probability(away, *two[0]) + pair.probability(away, *two[1]) == Approx(1.0f));
 }

@@ -51,6 +51,11 @@ float RoughConductorBSDF::pdf(const Vec3& wo, const Vec3& wi) const {
     return distribution_.pdf(wo, wm) / (4.0f * cos_wo_wm);
 }
 
+std::optional<GlossyLobe> RoughConductorBSDF::glossy_lobe(const Vec3& wo) const {
+    if (distribution_.effectively_smooth() || wo.z == 0.0f) return std::nullopt;
+    return GlossyLobe{Vec3(-wo.x, -wo.y, wo.z), std::max(distribution_.alpha_x(), distribution_.alpha_y())};
+}
+
 std::uint32_t RoughConductorBSDF::flags() const {
     return distribution_.effectively_smooth() ? SpecularConductorBSDF(eta_, k_).flags()
                                               : (BSDF_Reflection | BSDF_Glossy);

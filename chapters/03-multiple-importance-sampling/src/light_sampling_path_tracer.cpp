@@ -13,9 +13,9 @@ namespace {
 struct PreviousBounce {
     bool specular = true;   // a delta lobe (or the camera): light sampling could not have found this emission
     float bsdf_pdf = 0.0f;  // solid-angle density of the sampled direction
-    Vec3 position{0.0f};    // where the bounce happened
-    Vec3 normal{0.0f};      // its shading normal (the light sampler's shading point)
+    ShadingPoint point;     // where the bounce happened, as the light sampler saw it there
 };
+
 
 }  // namespace
 
@@ -35,12 +35,12 @@ RenderResult LightSamplingPathTracer::render(const Scene& scene, const RenderSet
 // BOOK(sample-one-light)
 // The light arriving at `hit` from one light chosen by the light sampler, reflected towards wo:
 // f Li |cos theta_i| / (P(light) p(wi)), weighted against BSDF sampling when combining by MIS.
-static Spectrum sample_one_light(const Hit& hit, const Frame& frame, const Vec3& wo, const BSDF& bsdf,
+static Spectrum sample_one_light(const Hit& hit, const ShadingPoint& point, const Frame& frame, const Vec3& wo, const BSDF& bsdf,
                                  const Scene& scene, const LightSampler& lights, const LightSamplingSettings& settings,
                                  Sampler& sampler) {
     const float u_select = sampler.get_1d(VertexDimension::LightChoice);
     const Vec2 u_light = sampler.get_2d(VertexDimension::LightPosition);
-    const std::optional<LightChoice> choice = lights.sample(ShadingPoint{hit.position, hit.shading_normal}, u_select);
+    const std::optional<LightChoice> choice = lights.sample(point, u_select);
     if (!choice) return Spectrum(0.0f);
     const std::optional<LightSample> sample = choice->light->sample_li(hit.position, u_light);
     if (!sample || sample->pdf <= 0.0f || is_black(sample->radiance)) return Spectrum(0.0f);
@@ -71,12 +71,12 @@ static float emission_weight(const PreviousBounce& previous, const Light* light,
                              const LightSampler& lights, const LightSamplingSettings& settings) {
     // EXERCISE(ch03/emission-weight): the weight of emission found by following a BSDF sample, as this function's comment above states it and book chapter 03, "Multiple importance sampling", explains it: counted once in all, whether light sampling could have found the same light or not
     if (previous.specular || light == nullptr) return 1.0f;
-    const float probability = lights.probability(ShadingPoint{previous.position, previous.normal}, *light);
+    const float probability = lights.probability(previous.point, *light);
     // Never chosen here (its power rounds to zero, or the light sampler knows it sends no light
     // to this point): only BSDF sampling finds it.
     if (probability == 0.0f) return 1.0f;
     if (settings.combination == Combination::NextEventEstimation) return 0.0f;
-    const float light_pdf = probability * light->pdf_li(previous.position, wi);
+    const float light_pdf = probability * light->pdf_li(previous.point.position, wi);
     return mis_weight(settings.heuristic, previous.bsdf_pdf, light_pdf);
     // END EXERCISE
 }
@@ -110,9 +110,11 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
         const Frame frame = shading_frame(*hit, bsdf, wo_world);  // two-sided unless it transmits
         const Vec3 wo = frame.to_local(wo_world);
 
+        const ShadingPoint point = shading_point(*hit, frame, wo, bsdf);
+
         // Next-event estimation: a light sample at every vertex with a non-delta lobe.
         if (bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy))
-            radiance += throughput * sample_one_light(*hit, frame, wo, bsdf, scene, lights, settings_, sampler);
+            radiance += throughput * sample_one_light(*hit, point, frame, wo, bsdf, scene, lights, settings_, sampler);
 
         // Continue the path by sampling the BSDF (chapter 02).
         const Vec2 u = sampler.get_2d(VertexDimension::BsdfDirection);
@@ -120,7 +122,7 @@ Spectrum LightSamplingPathTracer::li(const Ray& camera_ray, const Scene& scene, 
         if (!sample || sample->pdf <= 0.0f) break;
         throughput *= sample->weight();
         if (is_black(throughput)) break;
-        previous = {has_flag(sample->flags, BSDF_Specular), sample->pdf, hit->position, hit->shading_normal};
+        previous = {has_flag(sample->flags, BSDF_Specular), sample->pdf, point};
 
         if (segments >= ch02::RussianRouletteStart &&
             ch02::russian_roulette(throughput, sampler.get_1d(VertexDimension::Roulette)) == 0.0f)

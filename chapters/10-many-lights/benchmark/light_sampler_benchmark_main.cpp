@@ -14,6 +14,7 @@
 #include "freezeray/complete_renderer.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
+#include "freezeray/material.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/scene.hpp"
 
@@ -32,14 +33,21 @@ using namespace freezeray;
 
 namespace {
 
-// The first hits of the camera rays through the pixel centres.
+// The first hits of the camera rays through the pixel centres, as pt-mis shows them to the light
+// sampler (with the glossy lobe of a rough metal).
 std::vector<ShadingPoint> camera_hits(const Scene& scene) {
     std::vector<ShadingPoint> points;
+    ScratchArena arena;
     for (int y = 0; y < scene.camera->height(); ++y)
-        for (int x = 0; x < scene.camera->width(); ++x)
-            if (const std::optional<Hit> hit =
-                    scene.intersect(scene.camera->generate_ray(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f))))
-                points.push_back({hit->position, hit->shading_normal});
+        for (int x = 0; x < scene.camera->width(); ++x) {
+            const Ray ray = scene.camera->generate_ray(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+            if (const std::optional<Hit> hit = scene.intersect(ray)) {
+                const BSDF& bsdf = *scene.material(*hit).bsdf(*hit, arena);
+                const Frame frame = shading_frame(*hit, bsdf, -ray.direction);
+                points.push_back(shading_point(*hit, frame, frame.to_local(-ray.direction), bsdf));
+                arena.reset();
+            }
+        }
     return points;
 }
 

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace freezeray::ch10 {
@@ -197,7 +198,12 @@ void BvhLightSampler::gather(const std::vector<BinaryNode>& binary, std::uint32_
 // BOOK(child-probabilities)
 ChildWeights child_weights(const LightTreeNode& node, const ShadingPoint& point) {
     static_assert(LightTreeWidth == 4, "the sum below adds four lanes");
-    const Lanes weight = importance(node.children, point) * (1.0f / LightTreeWidth);
+    Lanes weight = importance(node.children, point);
+    // A glossy lobe at the point: each cluster as the lobe sees it (never 0 where the importance
+    // is not: the lobe only prefers, it never leaves a light out).
+    if (point.lobe_alpha > 0.0f)
+        weight = select(weight > 0.0f, max(weight * lobe_factor(node.children, point), splat(std::numeric_limits<float>::min())), splat(0.0f));
+    weight *= 1.0f / LightTreeWidth;
     return {weight, (weight[0] + weight[1]) + (weight[2] + weight[3])};
 }
 

@@ -169,6 +169,32 @@ FREEZERAY_ALSO_FOR_AVX2 Lanes importance(const LightClusterGroup& c, const Shadi
 }
 // END BOOK
 
+// BOOK(lobe-factor)
+FREEZERAY_ALSO_FOR_AVX2 Lanes lobe_factor(const LightClusterGroup& c, const ShadingPoint& point) {
+    // The direction from the point to each cluster's centre, and the half-angle theta_b of the
+    // cluster's bounding sphere seen from the point, as in importance().
+    const Lanes dx = c.centre_x - point.position.x, dy = c.centre_y - point.position.y, dz = c.centre_z - point.position.z;
+    const Lanes distance_squared = dx * dx + dy * dy + dz * dz;
+    const Lanes inverse_distance = select(distance_squared > 0.0f, 1.0f / sqrt(distance_squared), splat(0.0f));
+    const LaneMask outside = distance_squared > c.radius_squared;
+    const Lanes sin_b = select(outside, c.radius * inverse_distance, splat(0.0f));
+    const Lanes cos_b = select(outside, safe_sqrt(distance_squared - c.radius_squared) * inverse_distance, splat(-1.0f));
+    // psi: the angle between the lobe's axis and the centre; psi - theta_b, at least 0, the
+    // smallest angle between the axis and a direction into the sphere.
+    const Lanes a_dot = point.lobe_axis.x * dx + point.lobe_axis.y * dy + point.lobe_axis.z * dz;
+    const Lanes cos_a = a_dot * inverse_distance;
+    const Lanes sin_a = safe_sqrt(distance_squared - a_dot * a_dot) * inverse_distance;
+    const Lanes cos_p = cos_sub_clamped(sin_a, cos_a, sin_b, cos_b);
+    // A direction psi' from the mirror direction has its half vector psi' / 2 from the normal (in
+    // the plane of incidence; elsewhere about so). D(theta) / D(0) = 1 / (cos^2 theta +
+    // sin^2 theta / alpha^2)^2 for Trowbridge-Reitz, with cos^2 theta = (1 + cos psi') / 2 and
+    // sin^2 theta = (1 - cos psi') / 2 (Walter et al. 2007, equation 33).
+    const float inverse_alpha_squared = 1.0f / (point.lobe_alpha * point.lobe_alpha);
+    const Lanes x = ((1.0f + cos_p) + (1.0f - cos_p) * inverse_alpha_squared) * 0.5f;
+    return 1.0f / (x * x);
+}
+// END BOOK
+
 float importance(const LightBounds& bounds, const ShadingPoint& point) {
     LightClusterGroup group;
     group.set(0, bounds);

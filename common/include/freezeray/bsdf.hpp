@@ -36,6 +36,12 @@ struct BSDFSample {
     Spectrum weight() const { return pdf > 0.0f ? f * abs_cos_theta(wi) / pdf : Spectrum(0.0f); }
 };
 
+// A glossy lobe's axis (shading frame, unit length) and its microfacet roughness alpha > 0.
+struct GlossyLobe {
+    Vec3 axis{0.0f, 0.0f, 1.0f};
+    float alpha = 1.0f;
+};
+
 // Directions wo (towards the viewer) and wi (towards the light) both point away from the surface.
 class BSDF {
 public:
@@ -52,6 +58,11 @@ public:
 
     // The union of the lobes' BSDFFlags.
     virtual std::uint32_t flags() const = 0;
+
+    // Where, seen from wo, the BSDF is one glossy lobe: its axis (in the shading frame, unit
+    // length) and its microfacet roughness alpha; nothing for any other BSDF. Light samplers use
+    // it as a hint (chapter 10); nothing depends on it for correctness.
+    virtual std::optional<GlossyLobe> glossy_lobe(const Vec3& /*wo*/) const { return std::nullopt; }
 };
 
 }  // namespace freezeray

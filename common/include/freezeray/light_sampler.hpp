@@ -5,6 +5,8 @@
 // Tree Splitting", 2018).
 #pragma once
 
+#include "freezeray/bsdf.hpp"
+#include "freezeray/hit.hpp"
 #include "freezeray/light.hpp"
 #include "freezeray/math.hpp"
 
@@ -22,7 +24,26 @@ namespace freezeray {
 struct ShadingPoint {
     Vec3 position{0.0f};
     Vec3 normal{0.0f};
+    // Where the BSDF there sends most of its light, when it is one glossy lobe (a rough metal):
+    // the lobe's axis (the mirror direction of wo, unit length) and its microfacet roughness
+    // alpha; alpha 0 when the BSDF has no such lobe. A sampler may use it to prefer the lights
+    // the lobe looks at (chapter 10, "The lobe at the point"), never to leave a light out.
+    Vec3 lobe_axis{0.0f};
+    float lobe_alpha = 0.0f;
 };
+
+// The light sampler's view of a surface vertex: its position, shading normal and, when the BSDF
+// seen from wo (shading frame) is one glossy lobe, that lobe's axis in world space and its
+// roughness. A path tracer keeps it for the MIS weight of the emission its BSDF sample finds, so
+// that probability() is asked about the same point as sample() was.
+inline ShadingPoint shading_point(const Hit& hit, const Frame& frame, const Vec3& wo, const BSDF& bsdf) {
+    ShadingPoint point{hit.position, hit.shading_normal};
+    if (const std::optional<GlossyLobe> lobe = bsdf.glossy_lobe(wo)) {
+        point.lobe_axis = glm::normalize(frame.to_world(lobe->axis));
+        point.lobe_alpha = lobe->alpha;
+    }
+    return point;
+}
 
 // A light chosen for a shading point, and the probability that it was this one.
 struct LightChoice {

@@ -20,6 +20,8 @@ public:
     std::optional<BSDFSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const override;
     float pdf(const Vec3& wo, const Vec3& wi) const override;
     std::uint32_t flags() const override;
+    // Around the mirror direction of wo, as wide as the distribution's larger alpha.
+    std::optional<GlossyLobe> glossy_lobe(const Vec3& wo) const override;
 
 private:
     TrowbridgeReitz distribution_;

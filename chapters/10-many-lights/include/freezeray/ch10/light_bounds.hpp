@@ -77,6 +77,13 @@ inline constexpr float ReceiverFloor = 1e-3f;
 // the point can be chosen there.
 Lanes importance(const LightClusterGroup& clusters, const ShadingPoint& point);
 
+// How much of a glossy lobe (point.lobe_axis, point.lobe_alpha > 0) can look at each cluster of
+// the group, relative to the lobe's peak: the Trowbridge-Reitz (GGX) distribution D at the
+// half-vector angle of the direction nearest the lobe's axis within the cluster's bounding
+// sphere, over D at the axis; 1 where the sphere holds the axis (or the point), never below
+// alpha^4. Chapter 10, "The lobe at the point".
+Lanes lobe_factor(const LightClusterGroup& clusters, const ShadingPoint& point);
+
 // The importance of one cluster (computed in lane 0 of a group).
 float importance(const LightBounds& bounds, const ShadingPoint& point);
 
