@@ -33,21 +33,25 @@ using namespace freezeray;
 
 namespace {
 
-// The first hits of the camera rays through the pixel centres, as pt-mis shows them to the light
-// sampler (with the glossy lobe of a rough metal).
+// The first hit of the camera ray through the centre of pixel (x, y), as pt-mis shows it to the
+// light sampler (with the glossy lobe of a rough metal); nothing where the ray misses.
+std::optional<ShadingPoint> camera_hit(const Scene& scene, int x, int y, ScratchArena& arena) {
+    const Ray ray = scene.camera->generate_ray(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+    const std::optional<Hit> hit = scene.intersect(ray);
+    if (!hit) return std::nullopt;
+    arena.reset();
+    const BSDF& bsdf = *scene.material(*hit).bsdf(*hit, arena);
+    const Frame frame = shading_frame(*hit, bsdf, -ray.direction);
+    return shading_point(*hit, frame, frame.to_local(-ray.direction), bsdf);
+}
+
+// The first hits of the camera rays through every pixel centre.
 std::vector<ShadingPoint> camera_hits(const Scene& scene) {
     std::vector<ShadingPoint> points;
     ScratchArena arena;
     for (int y = 0; y < scene.camera->height(); ++y)
-        for (int x = 0; x < scene.camera->width(); ++x) {
-            const Ray ray = scene.camera->generate_ray(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
-            if (const std::optional<Hit> hit = scene.intersect(ray)) {
-                const BSDF& bsdf = *scene.material(*hit).bsdf(*hit, arena);
-                const Frame frame = shading_frame(*hit, bsdf, -ray.direction);
-                points.push_back(shading_point(*hit, frame, frame.to_local(-ray.direction), bsdf));
-                arena.reset();
-            }
-        }
+        for (int x = 0; x < scene.camera->width(); ++x)
+            if (const std::optional<ShadingPoint> point = camera_hit(scene, x, y, arena)) points.push_back(*point);
     return points;
 }
 
@@ -67,14 +71,13 @@ Image choice_map(const Scene& scene, const LightSampler& sampler) {
         group_of[light->index] = groups.emplace(group, static_cast<int>(groups.size())).first->second;
     }
     Image map(scene.camera->width(), scene.camera->height());
+    ScratchArena arena;
     for (int y = 0; y < map.height(); ++y)
         for (int x = 0; x < map.width(); ++x) {
-            const std::optional<Hit> hit =
-                scene.intersect(scene.camera->generate_ray(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f)));
-            if (!hit) continue;
-            const ShadingPoint point{hit->position, hit->shading_normal};
+            const std::optional<ShadingPoint> point = camera_hit(scene, x, y, arena);
+            if (!point) continue;
             std::vector<double> probability(groups.size(), 0.0);
-            for (const auto& light : scene.lights) probability[group_of[light->index]] += sampler.probability(point, *light);
+            for (const auto& light : scene.lights) probability[group_of[light->index]] += sampler.probability(*point, *light);
             const auto most = std::max_element(probability.begin(), probability.end()) - probability.begin();
             map.at(x, y) = static_cast<float>(probability[most]) *
                            hue_colour(std::fmod(0.61803398875f * static_cast<float>(most), 1.0f));
