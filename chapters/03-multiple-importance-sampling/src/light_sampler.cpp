@@ -7,19 +7,24 @@ namespace freezeray::ch03 {
 
 namespace {
 
-std::vector<float> selection_weights(const std::vector<std::unique_ptr<Light>>& lights, LightSelection selection) {
+// The power of each light, the weights of the choice by power. A light with zero power is never
+// chosen by power (it would only waste shadow rays); when every light has zero power the
+// distribution falls back to uniform, and the image is black.
+std::vector<float> power_weights(const std::vector<std::unique_ptr<Light>>& lights) {
     std::vector<float> weights;
     weights.reserve(lights.size());
-    // A light with zero power is never chosen by power (it would only waste shadow rays); when
-    // every light has zero power the distribution falls back to uniform, and the image is black.
-    for (const auto& light : lights) weights.push_back(selection == LightSelection::Power ? luminance(light->power()) : 1.0f);
+    for (const auto& light : lights) weights.push_back(luminance(light->power()));
     return weights;
 }
 
 }  // namespace
 
 FixedLightSampler::FixedLightSampler(const std::vector<std::unique_ptr<Light>>& lights, LightSelection selection)
-    : lights_(lights), selection_(selection), distribution_(lights.empty() ? std::vector<float>{0.0f} : selection_weights(lights, selection)) {}
+    : lights_(lights),
+      selection_(selection),
+      // The uniform choice needs no table (see sample); the power choice searches this one.
+      distribution_(lights.empty() || selection == LightSelection::Uniform ? std::vector<float>{0.0f}
+                                                                            : power_weights(lights)) {}
 
 std::optional<LightChoice> FixedLightSampler::sample(float u) const {
     if (lights_.empty()) return std::nullopt;

@@ -16,7 +16,6 @@ struct PreviousBounce {
     ShadingPoint point;     // where the bounce happened, as the light sampler saw it there
 };
 
-
 }  // namespace
 
 LightSamplingPathTracer::LightSamplingPathTracer(const LightSamplingSettings& settings) : settings_(settings) {

@@ -34,7 +34,7 @@ public:
 private:
     const std::vector<std::unique_ptr<Light>>& lights_;
     LightSelection selection_;
-    PiecewiseConstant1D distribution_;
+    PiecewiseConstant1D distribution_;  // the choice by power (one zero weight for the uniform choice)
 };
 
 }  // namespace freezeray::ch03
