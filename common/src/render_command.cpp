@@ -59,7 +59,8 @@ SamplerChoice choose_sampler(const std::string& requested, const std::string& wh
     if (!integrator.draws_from_sampler() && name != "independent") {
         if (named)
             throw InputError(at, integrator_name + " draws its numbers from its own streams (light paths, Markov chains), "
-                                 "not from a sampler: only the per-pixel integrators take --sampler " + name);
+                                 "not from a sampler: only the per-pixel integrators and bdpt, whose samples "
+                                 "belong to pixels, take --sampler " + name);
         name = "independent";
     }
     return {name, registry.make_sampler(name, at)};

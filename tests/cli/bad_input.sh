@@ -91,6 +91,10 @@ expect_failure "impossible tile size" "--texture-tile-size" "not 3" -- render "$
 expect_failure "unknown light sampler" "--light-sampler" "did you mean" -- render "$work/good.json" --integrator pt-mis --light-sampler bhv --out "$work/out.png"
 expect_failure "a light sampler for bdpt" "--light-sampler" "bdpt does not choose lights through a light sampler" -- render "$work/good.json" --integrator bdpt --light-sampler bvh --out "$work/out.png"
 echo "{ $camera, \"meshes\": [{\"file\": \"tri.obj\"}], \"render\": {\"light_sampler\": \"tree\"} }" > "$work/light-tree.json"
+# A sampler (chapter 09) for an integrator whose numbers are not a pixel's samples: light tracing
+# and the Markov chains refuse it; bdpt takes it.
+expect_failure "a sampler for mlt" "--sampler" "mlt draws its numbers from its own streams" -- render "$work/good.json" --integrator mlt --sampler sobol --out "$work/out.png"
+expect_failure "a sampler for light tracing" "--sampler" "light-tracing draws its numbers from its own streams" -- render "$work/good.json" --integrator light-tracing --sampler zsobol --out "$work/out.png"
 expect_failure "unknown light sampler in the scene" "light-tree.json: /render/light_sampler" "tree" -- render "$work/light-tree.json" --out "$work/out.png"
 expect_failure "a compare run naming an unknown sampler" "--integrators" "bvhh" -- compare "$work/good.json" --integrators pt-mis@bvhh --spp 1 --out "$work/report"
 renderer=$chapter01_renderer

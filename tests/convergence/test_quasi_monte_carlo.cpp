@@ -1,7 +1,7 @@
-// Chapter 09's samplers inside the renderer: pt-mis drawing from `sobol`, `zsobol` or `stratified` converges
-// to the same image as pt-mis with independent samples, and stays deterministic. A QMC render's
-// per-pixel variance does not measure its error (its samples are not independent), so agreement
-// is tested over 16 runs with independent scrambles (seeds), whose spread does. Four tests at
+// Chapter 09's samplers inside the renderer: pt-mis drawing from `sobol`, `zsobol` or `stratified`,
+// and bdpt drawing from `sobol`, converge to the same image as pt-mis with independent samples,
+// and stay deterministic. A QMC render's per-pixel variance does not measure its error (its samples are not independent), so agreement
+// is tested over 16 runs with independent scrambles (seeds), whose spread does. Five tests at
 // convergence_test_alpha (tests/STATISTICS.md, label convergence).
 #include "independent_runs.hpp"
 #include "determinism.hpp"
@@ -44,8 +44,19 @@ TEST_CASE("pt-mis with the zsobol sampler agrees with independent pt-mis on the 
     testing::require_agrees_with_pt_mis(request);
 }
 
+TEST_CASE("bdpt with the sobol sampler agrees with independent pt-mis on the Cornell box", "[convergence][ch09]") {
+    // Bidirectional samples drawn from the pixel's sampler (chapter 04's PixelSampleStream): as
+    // above, 8 x 8 blocks: 1 test.
+    testing::SplattingAgreement request;
+    request.integrator = "bdpt@sobol";
+    request.scene = "cornell-box/scene.json";
+    request.first_seed = 991;
+    request.block_sizes = {8};
+    testing::require_agrees_with_pt_mis(request);
+}
+
 TEST_CASE("a sobol image is bit-identical with 1 and 2 threads", "[convergence][determinism][ch09]") {
-    for (const char* integrator : {"pt-mis@sobol", "pt-mis@zsobol", "pt-naive@stratified"}) {
+    for (const char* integrator : {"pt-mis@sobol", "pt-mis@zsobol", "pt-naive@stratified", "bdpt@sobol", "bdpt@zsobol"}) {
         testing::TestRender request;
         request.scene = testing::scene_path("cornell-box/scene.json");
         request.integrator = integrator;

@@ -3,11 +3,13 @@
 
 #include "freezeray/ch02/path_tracer.hpp"
 #include "freezeray/ch04/bdpt_mis_weight.hpp"
+#include "freezeray/ch04/pixel_sample_stream.hpp"
 #include "freezeray/ch04/strategy_images.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/ch04/subpaths.hpp"
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace freezeray::ch04 {
@@ -53,7 +55,7 @@ StrategyContribution connect_strategy(const Scene& scene, const ch03::FixedLight
         // Sample a point on a light (chapter 03's next-event estimation) for the camera subpath.
         const PathVertex& pt = camera[t - 1];
         const float u_select = samples.next_float();
-        const Vec2 u_light(samples.next_float(), samples.next_float());
+        const Vec2 u_light = samples.next_2d();
         if (!pt.connectible()) return result;
         const std::optional<ch03::FixedLightSampler::Choice> choice = lights.sample(u_select);
         if (!choice || choice->probability <= 0.0f) return result;
@@ -125,14 +127,18 @@ RenderResult BidirectionalPathTracer::render(const Scene& scene, const RenderSet
     const StrategyLayers layers(settings_.max_depth);
     const bool strategy_images = !settings_.strategy_images_folder.empty();
 
-    const LightPathEstimator estimator = [&](std::uint32_t slot, PCG32& random, ScratchArena& arena,
+    const LightPathEstimator estimator = [&](std::uint32_t slot, PCG32& random, Sampler* sampler, ScratchArena& arena,
                                              SplatBuffer& splats) {
         thread_local SubpathStorage storage;
-        IndependentSamples samples(random);
+        // The render's sampler when it has one (chapter 09), else the slot's own stream.
+        IndependentSamples independent(random);
+        std::optional<PixelSampleStream> from_sampler;
+        if (sampler != nullptr) from_sampler.emplace(*sampler);
+        SampleStream& samples = from_sampler ? static_cast<SampleStream&>(*from_sampler) : independent;
         // One sample per pixel and batch: the film position within this slot's pixel.
         const int x = static_cast<int>(slot % static_cast<std::uint32_t>(pinhole.width()));
         const int y = static_cast<int>(slot / static_cast<std::uint32_t>(pinhole.width()));
-        const Vec2 film(static_cast<float>(x) + samples.next_float(), static_cast<float>(y) + samples.next_float());
+        const Vec2 film = Vec2(static_cast<float>(x), static_cast<float>(y)) + samples.next_2d();
         bidirectional_sample(scene, lights, settings_, film, samples, arena, storage,
                              [&](const BidirectionalContribution& c) {
                                  if (!is_black(c.weighted)) splats.add_splat(c.raster_position, c.weighted);

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <vector>
 
 namespace freezeray::ch04 {
@@ -45,6 +46,16 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
     const std::size_t units_per_round = std::min(units, UnitsPerRound);
     std::vector<SplatBuffer> buffers(units_per_round, SplatBuffer(width, height));
     std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
+    // The render's sampler, one clone per thread, when it has one (see LightPathEstimator).
+    std::vector<std::unique_ptr<Sampler>> samplers;
+    if (settings.sampler) {
+        const bool counted = settings.time_seconds <= 0.0 && settings.target_error <= 0.0;
+        for (int t = 0; t < threads; ++t) {
+            samplers.push_back(settings.sampler->clone());
+            samplers.back()->set_seed(settings.seed);
+            samplers.back()->plan_render(width, height, counted ? settings.samples_per_pixel : 0);
+        }
+    }
     RenderResult result;
     SplatBatches batches(settings, progress, slots);
     while (batches.next_batch(result)) {
@@ -67,7 +78,11 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
                     // measure the difference between two different things.
                     buffer.begin_light_path(sample + slot);
                     arena.reset();
-                    estimator(slot, random, arena, buffer);
+                    Sampler* sampler = samplers.empty() ? nullptr : samplers[static_cast<std::size_t>(thread)].get();
+                    if (sampler != nullptr)
+                        sampler->start_pixel_sample(static_cast<int>(slot % static_cast<std::uint32_t>(width)),
+                                                    static_cast<int>(slot / static_cast<std::uint32_t>(width)), slot, sample);
+                    estimator(slot, random, sampler, arena, buffer);
                 }
                 progress.advance(last - first);
             });

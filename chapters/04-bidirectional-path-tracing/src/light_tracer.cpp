@@ -81,7 +81,7 @@ LightTracer::LightTracer(const LightTracingSettings& settings) : settings_(setti
 RenderResult LightTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
     const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     return render_light_paths(scene, settings, progress,
-                              [&](std::uint32_t, PCG32& random, ScratchArena& arena, SplatBuffer& splats) {
+                              [&](std::uint32_t, PCG32& random, Sampler*, ScratchArena& arena, SplatBuffer& splats) {
                                   trace_light_path(scene, lights, random, arena, splats);
                               });
 }

@@ -58,7 +58,7 @@ int random_walk(const Scene& scene, Ray ray, SampleStream& samples, ScratchArena
         // Sample the next direction. A light subpath scatters with the adjoint BSDF (as light
         // tracing does: the shading-normal correction and eta^2 on transmission).
         const Vec3 wo = vertex.frame.to_local(vertex.wo);
-        const Vec2 u(samples.next_float(), samples.next_float());
+        const Vec2 u = samples.next_2d();
         const std::optional<BSDFSample> sample = bsdf.sample(wo, u, samples.next_float());
         if (!sample || sample->pdf <= 0.0f) break;
         const Vec3 wi_world = vertex.frame.to_world(sample->wi);
@@ -117,8 +117,8 @@ int light_subpath(const Scene& scene, const ch03::FixedLightSampler& lights, Sam
     if (max_vertices <= 0) return 0;
     samples.start_stream(LightStream);
     const std::optional<ch03::FixedLightSampler::Choice> choice = lights.sample(samples.next_float());
-    const Vec2 u_position(samples.next_float(), samples.next_float());
-    const Vec2 u_direction(samples.next_float(), samples.next_float());
+    const Vec2 u_position = samples.next_2d();
+    const Vec2 u_direction = samples.next_2d();
     if (!choice || choice->probability <= 0.0f) return 0;
     const std::optional<LightEmissionSample> emission = choice->light->sample_le(u_position, u_direction);
     if (!emission || emission->pdf_position <= 0.0f || emission->pdf_direction <= 0.0f || is_black(emission->radiance))

@@ -91,8 +91,9 @@ public:
     virtual bool resumable() const { return true; }
 
     // True when the integrator draws its numbers from RenderSettings::sampler (the per-pixel
-    // loop, render_pixels); the others (light paths, Markov chains) use their own streams, and
-    // `--sampler` other than independent is refused for them.
+    // loop, render_pixels, and bidirectional path tracing, whose samples belong to pixels); the
+    // others (light tracing, Markov chains) use their own streams, and `--sampler` other than
+    // independent is refused for them.
     virtual bool draws_from_sampler() const { return false; }
 
     // True when the integrator chooses a light at each shading point through

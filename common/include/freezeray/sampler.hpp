@@ -60,6 +60,11 @@ public:
     }
     float get_1d(VertexDimension d) { return sample_1d(vertex_first_dimension_ + static_cast<std::uint32_t>(d)); }
     Vec2 get_2d(VertexDimension d) { return sample_2d(vertex_first_dimension_ + static_cast<std::uint32_t>(d)); }
+    // The number, or pair, at an explicit dimension, for an integrator whose draws do not follow
+    // the per-vertex layout (chapter 04's bidirectional samples, sample_stream.hpp, lay out their
+    // own). A pair takes `dimension` and `dimension + 1`.
+    float get_1d_at(std::uint32_t dimension) { return sample_1d(dimension); }
+    Vec2 get_2d_at(std::uint32_t dimension) { return sample_2d(dimension); }
 
 protected:
     virtual void begin(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) = 0;

@@ -5,6 +5,7 @@
 #include "freezeray/image.hpp"
 #include "freezeray/integrator.hpp"
 #include "freezeray/random.hpp"
+#include "freezeray/sampler.hpp"
 #include "freezeray/scratch_arena.hpp"
 #include "freezeray/ch04/splat_film.hpp"
 
@@ -16,9 +17,12 @@ namespace freezeray::ch04 {
 
 // One light path (or, for bidirectional path tracing, one pair of subpaths) for work slot
 // `slot` in [0, pixel count): everything it contributes goes into `splats`, at any pixel. All
-// randomness from `random`; scratch allocations in `arena`, reset before every call.
-using LightPathEstimator =
-    std::function<void(std::uint32_t slot, PCG32& random, ScratchArena& arena, SplatBuffer& splats)>;
+// randomness from `random`, the slot's own stream, or from `sampler` when it is not null: the
+// render's sampler (RenderSettings::sampler, chapter 09), started at the slot's pixel and the
+// batch's sample index (a bidirectional sample is that pixel's sample). Scratch allocations in
+// `arena`, reset before every call.
+using LightPathEstimator = std::function<void(std::uint32_t slot, PCG32& random, Sampler* sampler, ScratchArena& arena,
+                                              SplatBuffer& splats)>;
 
 // The image loop of integrators that splat : batches of one light path per slot
 // (pixel count paths per batch, each from make_pixel_stream(seed, slot, sample)), so that a

@@ -4,6 +4,7 @@
 // interface so that Metropolis light transport can drive the very same code.
 #pragma once
 
+#include "freezeray/math.hpp"
 #include "freezeray/random.hpp"
 
 namespace freezeray::ch04 {
@@ -14,6 +15,16 @@ public:
 
     // The next number in [0, 1).
     virtual float next_float() = 0;
+
+    // The next pair, for a 2D draw (a point on a light, a BSDF direction), so that a sampler
+    // that stratifies pairs (chapter 09) can give one. By default two numbers, the second drawn
+    // first: the order in which g++ evaluated Vec2(next_float(), next_float()) in this chapter's
+    // code before there was a pair, kept so that images stay bit for bit what they were.
+    virtual Vec2 next_2d() {
+        const float second = next_float();
+        const float first = next_float();
+        return Vec2(first, second);
+    }
 
     // Switches to stream `index` and restarts it: numbers of different streams never shift one
     // another (a longer camera subpath does not change the light subpath's numbers). Used by
