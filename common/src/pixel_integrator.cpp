@@ -44,6 +44,18 @@ std::uint64_t next_pass_size(std::uint64_t done, std::uint64_t sample_cap, std::
 
 }  // namespace
 
+std::vector<std::unique_ptr<Sampler>> thread_samplers(const Sampler& prototype, const RenderSettings& settings,
+                                                      int threads, int width, int height) {
+    const bool counted = settings.time_seconds <= 0.0 && settings.target_error <= 0.0;
+    std::vector<std::unique_ptr<Sampler>> samplers;
+    for (int t = 0; t < threads; ++t) {
+        samplers.push_back(prototype.clone());
+        samplers.back()->set_seed(settings.seed);
+        samplers.back()->plan_render(width, height, counted ? settings.samples_per_pixel : 0);
+    }
+    return samplers;
+}
+
 // BOOK(pixel-loop)
 RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, Progress& progress,
                            const RadianceEstimator& li) {
@@ -63,13 +75,8 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
                                          std::to_string(height));
     std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
     const IndependentSampler independent;
-    const Sampler& prototype = settings.sampler ? *settings.sampler : independent;
-    std::vector<std::unique_ptr<Sampler>> samplers;
-    for (int t = 0; t < threads; ++t) {
-        samplers.push_back(prototype.clone());
-        samplers.back()->set_seed(settings.seed);
-        samplers.back()->plan_render(width, height, by_time || by_error ? 0 : sample_cap);
-    }
+    const std::vector<std::unique_ptr<Sampler>> samplers =
+        thread_samplers(settings.sampler ? *settings.sampler : independent, settings, threads, width, height);
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     progress.start("render", by_time ? 0 : sample_cap * width * height, settings.time_seconds);

@@ -47,15 +47,9 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
     std::vector<SplatBuffer> buffers(units_per_round, SplatBuffer(width, height));
     std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
     // The render's sampler, one clone per thread, when it has one (see LightPathEstimator).
-    std::vector<std::unique_ptr<Sampler>> samplers;
-    if (settings.sampler) {
-        const bool counted = settings.time_seconds <= 0.0 && settings.target_error <= 0.0;
-        for (int t = 0; t < threads; ++t) {
-            samplers.push_back(settings.sampler->clone());
-            samplers.back()->set_seed(settings.seed);
-            samplers.back()->plan_render(width, height, counted ? settings.samples_per_pixel : 0);
-        }
-    }
+    const std::vector<std::unique_ptr<Sampler>> samplers =
+        settings.sampler ? thread_samplers(*settings.sampler, settings, threads, width, height)
+                         : std::vector<std::unique_ptr<Sampler>>{};
     RenderResult result;
     SplatBatches batches(settings, progress, slots);
     while (batches.next_batch(result)) {

@@ -106,6 +106,13 @@ public:
 // has started the pixel sample; scratch allocations in `arena`, which is reset before every call.
 using RadianceEstimator = std::function<Spectrum(const Ray& ray, Sampler& sampler, ScratchArena& arena)>;
 
+// One clone of `prototype` per thread for a render of width x height pixels, each seeded with the
+// render's seed and told the samples per pixel the render plans (0 when a time budget or a target
+// error decides, see Sampler::plan_render). Both image loops use it: render_pixels, and chapter
+// 04's render_light_paths for bidirectional samples.
+std::vector<std::unique_ptr<Sampler>> thread_samplers(const Sampler& prototype, const RenderSettings& settings,
+                                                      int threads, int width, int height);
+
 // The image loop shared by every per-pixel integrator: passes of samples over all tiles until the
 // sample count, the time budget or the target error is reached; each sample from its own stream.
 RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, Progress& progress,
