@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # sampler-points as the book's figure script runs it: 256 points per sampler in [0, 1)^2, Sobol's
 # first 64 and all 256 one per cell of 8 x 8 and 16 x 16 (a net's property, which independent
-# points lack), the same points on every run; bad input refused with exit status 1 and a message.
+# points lack; vertex 4's BSDF direction, the first pair of its own joint set), the same points on every run; bad input refused with exit status 1 and a message.
 # Usage: sampler_points_cli.sh SAMPLER_POINTS
 set -u
 program=$1
@@ -10,7 +10,7 @@ fail() { echo "FAIL [$1]: $2"; failures=$((failures + 1)); }
 
 for sampler in independent stratified sobol zsobol sobol-unscrambled; do
     for draw in pixel bsdf; do
-        if ! out=$("$program" --sampler "$sampler" --count 256 --draw "$draw" --vertex 3 --pixel-x 5 --pixel-y 7 2>&1); then
+        if ! out=$("$program" --sampler "$sampler" --count 256 --draw "$draw" --vertex 4 --pixel-x 5 --pixel-y 7 2>&1); then
             fail "$sampler $draw" "exit status $?: $out"; continue
         fi
         if ! python3 - "$sampler" "$draw" <<PY

@@ -1,11 +1,13 @@
 // Chapter 09's sequences and samplers: the Sobol points and the scrambled sampler's points are
 // nets (every elementary interval counted), the stratified sampler stratifies each block, the
 // scramble keeps what it must and randomizes the rest, and every number depends only on (seed,
-// pixel, sample index, dimension), and the zsobol sampler's pixel quads are nets together.
+// pixel, sample index, dimension), the zsobol sampler's pixel quads are nets together, and the
+// draws of a joint set are one Sobol point, as stratified as the sequence in every projection.
 // Deterministic except the six chi-square tests of the scrambles' randomness (three for sobol,
 // three for zsobol; label unit, unit_test_alpha each; tests/STATISTICS.md counts them).
 #include "freezeray/ch09/owen_scrambling.hpp"
 #include "freezeray/ch09/radical_inverse.hpp"
+#include "freezeray/ch09/scrambled_sobol.hpp"
 #include "freezeray/ch09/sobol_matrices.hpp"
 #include "freezeray/ch09/sobol_sampler.hpp"
 #include "freezeray/ch09/stratified_sampler.hpp"
@@ -18,7 +20,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <set>
+#include <string>
+#include <utility>
 #include <vector>
 
 using namespace freezeray;
@@ -174,14 +179,23 @@ TEST_CASE("a nested uniform scramble flips each bit by a function of the bits ab
     CHECK(nested_uniform_scramble(0x40000000u, 1) != nested_uniform_scramble(0x40000000u, 2));
 }
 
-TEST_CASE("the scrambled van der Corput point is the nested scramble of the reversed index", "[unit][ch09]") {
-    // The samplers' shortcut (two reversals that cancel) must give the very numbers of the
-    // definition, or images would change.
+TEST_CASE("a scrambled Sobol coordinate from the reversed tables is the nested scramble of the point", "[unit][ch09]") {
+    // The samplers stay in reversed bit order from the shuffled index to the scramble
+    // (scrambled_sobol.hpp); the number must be the one the definitions give.
+    const SobolByteTables* tables = reversed_sobol_tables();
     PCG32 random(12, 5);
     for (int trial = 0; trial < 100000; ++trial) {
         const std::uint32_t index = trial < 1024 ? static_cast<std::uint32_t>(trial) : random.next_uint();
         const std::uint32_t seed = random.next_uint();
-        REQUIRE(scrambled_van_der_corput(index, seed) == nested_uniform_scramble(reverse_bits(index), seed));
+        const auto c = static_cast<std::uint32_t>(trial % SobolDimensions);
+        INFO("index " << index << ", coordinate " << c);
+        REQUIRE(multiply_by_bytes(tables[c], reverse_bits(index)) == reverse_bits(sobol_sample_bits(index, static_cast<int>(c))));
+        REQUIRE(scrambled_sobol_coordinate(tables, reverse_bits(index), c, seed) ==
+                nested_uniform_scramble(sobol_sample_bits(index, static_cast<int>(c)), seed));
+        // The samplers' tables, in the order of a joint set's coordinates.
+        const std::uint32_t coordinate = c % MaxJointCoordinates;
+        REQUIRE(scrambled_sobol_coordinate(joint_coordinate_tables(), reverse_bits(index), coordinate, seed) ==
+                nested_uniform_scramble(sobol_sample_bits(index, JointCoordinateDimension[coordinate]), seed));
     }
 }
 
@@ -447,4 +461,156 @@ TEST_CASE("the zsobol sampler's scrambles make each point uniform and the dimens
     CHECK(uniform_grid_p_value(over_seeds, 16) > stats::unit_test_alpha);
     CHECK(uniform_grid_p_value(two_dimensions, 16) > stats::unit_test_alpha);
     CHECK(uniform_grid_p_value(within_pixel_pairs(sampler), 16) > stats::unit_test_alpha);
+}
+
+namespace {
+
+// The t of the smallest-t (t, m, s)-net the 2^m points' projection on `coordinates` is: for
+// every split of m - t bits among the coordinates, each box of that shape holds 2^t points.
+int net_t_value(const std::vector<std::vector<float>>& points, const std::vector<std::size_t>& coordinates, int m) {
+    const std::size_t s = coordinates.size();
+    for (int t = 0; t < m; ++t) {
+        const int k = m - t;
+        bool net = true;
+        std::vector<int> bits(s, 0);  // a split of k bits: bits[0 .. s-2] chosen, the last gets the rest
+        std::function<void(std::size_t, int)> split = [&](std::size_t c, int left) {
+            if (!net) return;
+            if (c + 1 == s) {
+                bits[c] = left;
+                std::vector<int> count(std::size_t{1} << k, 0);
+                for (const std::vector<float>& p : points) {
+                    std::size_t box = 0;
+                    for (std::size_t i = 0; i < s; ++i)
+                        box = (box << bits[i]) | static_cast<std::size_t>(std::ldexp(p[coordinates[i]], bits[i]));
+                    ++count[box];
+                }
+                for (int n : count)
+                    if (n != (1 << t)) net = false;
+                return;
+            }
+            for (int b = 0; b <= left; ++b) {
+                bits[c] = b;
+                split(c + 1, left - b);
+            }
+        };
+        split(0, k);
+        if (net) return t;
+    }
+    return m;
+}
+
+// Samples [first, first + count) of pixel 5: every draw of the per-vertex layout whose place is
+// in joint set `set`, at its coordinates (a point per sample).
+std::vector<std::vector<float>> joint_set_points(Sampler& s, std::uint32_t set, std::uint64_t first, std::uint64_t count) {
+    constexpr VertexDimension draws[] = {VertexDimension::LightChoice, VertexDimension::LightPosition,
+                                         VertexDimension::BsdfDirection, VertexDimension::BsdfLobe,
+                                         VertexDimension::Roulette};
+    std::vector<std::vector<float>> points;
+    for (std::uint64_t i = first; i < first + count; ++i) {
+        s.start_pixel_sample(5, 0, 5, i);
+        std::vector<float> p(MaxJointCoordinates, -1.0f);
+        for (int vertex = 1; vertex <= QuasiRandomVertices; ++vertex) {
+            s.start_vertex(vertex);
+            for (VertexDimension d : draws) {
+                const DrawPlace place = vertex_draw_place(vertex, d);
+                if (place.set != set) continue;
+                if (d == VertexDimension::LightPosition || d == VertexDimension::BsdfDirection) {
+                    const Vec2 u = s.get_2d(d);
+                    p[place.coordinate] = u.x;
+                    p[place.coordinate + 1] = u.y;
+                } else {
+                    p[place.coordinate] = s.get_1d(d);
+                }
+            }
+        }
+        points.push_back(p);
+    }
+    return points;
+}
+
+// REQUIREs that each tested joint set's draws over samples [a 2^m, (a + 1) 2^m) of a pixel are
+// as well stratified as the Sobol sequence's first 2^m points in the same dimensions (those of
+// the set's coordinates, JointCoordinateDimension): every pair and triple of coordinates, and the path set's first four
+// (vertex 1's BSDF direction with vertex 2's light position), have the t of the sequence's
+// projection. The shuffle and the scrambles move points between boxes of a shape, whole boxes
+// to whole boxes, so the t is exactly the sequence's; sets drawn apart would not keep it.
+void require_joint_sets_are_sobol_points(Sampler& sampler, const std::string& what) {
+    const std::uint32_t vertex1_light = vertex_draw_place(1, VertexDimension::LightPosition).set;
+    const std::uint32_t vertex4_bsdf = vertex_draw_place(4, VertexDimension::BsdfDirection).set;
+    for (std::uint32_t set : {vertex1_light, PathSet, vertex4_bsdf}) {
+        for (int m : {5, 8}) {
+            // The sequence's own points and which coordinates the set uses.
+            std::vector<std::vector<float>> sobol_points;
+            for (std::uint32_t i = 0; i < (1u << m); ++i) {
+                std::vector<float> p;
+                for (int d : JointCoordinateDimension) p.push_back(sobol_sample(i, d));
+                sobol_points.push_back(p);
+            }
+            for (std::uint64_t block : {0ull, 5ull}) {
+                const auto points = joint_set_points(sampler, set, block << m, std::uint64_t{1} << m);
+                std::vector<std::size_t> used;
+                for (std::size_t c = 0; c < MaxJointCoordinates; ++c)
+                    if (points[0][c] >= 0.0f) used.push_back(c);
+                std::vector<std::vector<std::size_t>> projections;
+                for (std::size_t a = 0; a < used.size(); ++a)
+                    for (std::size_t b = a + 1; b < used.size(); ++b) {
+                        projections.push_back({used[a], used[b]});
+                        for (std::size_t c = b + 1; c < used.size(); ++c) projections.push_back({used[a], used[b], used[c]});
+                    }
+                if (set == PathSet) projections.push_back({0, 1, 2, 3});
+                for (const auto& projection : projections) {
+                    std::string coordinates;
+                    for (std::size_t c : projection) coordinates += std::to_string(c) + " ";
+                    INFO(what << ", set " << set << ", m = " << m << ", block " << block << ", coordinates " << coordinates);
+                    REQUIRE(net_t_value(points, projection, m) == net_t_value(sobol_points, projection, m));
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+TEST_CASE("the per-vertex layout gives every draw its own dimension and coordinates in its set", "[unit][ch09]") {
+    // Over every vertex: dimensions never shared (a pair takes two), within a set no coordinate
+    // taken twice, every coordinate below MaxJointCoordinates, and the documented sets.
+    std::set<std::uint32_t> dimensions;
+    std::set<std::pair<std::uint32_t, std::uint32_t>> coordinates;  // (set, coordinate)
+    for (int vertex = 1; vertex <= QuasiRandomVertices + 2; ++vertex)
+        for (VertexDimension d : {VertexDimension::LightChoice, VertexDimension::LightPosition, VertexDimension::BsdfDirection,
+                                  VertexDimension::BsdfLobe, VertexDimension::Roulette}) {
+            const DrawPlace place = vertex_draw_place(vertex, d);
+            const bool pair = d == VertexDimension::LightPosition || d == VertexDimension::BsdfDirection;
+            INFO("vertex " << vertex << ", draw " << static_cast<int>(d));
+            CHECK(place.dimension == CameraDimensions + DimensionsPerVertex * (vertex - 1) + static_cast<std::uint32_t>(d));
+            for (std::uint32_t k = 0; k < (pair ? 2u : 1u); ++k) {
+                CHECK(dimensions.insert(place.dimension + k).second);
+                CHECK(coordinates.insert({place.set, place.coordinate + k}).second);
+                CHECK(place.coordinate + k < MaxJointCoordinates);
+            }
+            const bool in_path = vertex <= JointPathVertices && (vertex > 1 || d == VertexDimension::BsdfDirection ||
+                                                                   d == VertexDimension::BsdfLobe);
+            if (d == VertexDimension::Roulette) CHECK(place.set == place.dimension);
+            else if (in_path) CHECK(place.set == PathSet);
+            else if (d == VertexDimension::LightChoice) CHECK(place == DrawPlace{place.dimension, place.dimension + 1, 2});
+            else if (d == VertexDimension::BsdfLobe) CHECK(place == DrawPlace{place.dimension, place.dimension - 2, 2});
+            else CHECK(place == DrawPlace{place.dimension, place.dimension, 0});
+        }
+    CHECK(vertex_draw_place(1, VertexDimension::BsdfDirection) == DrawPlace{PathSet, PathSet, 0});
+    CHECK(vertex_draw_place(2, VertexDimension::LightPosition).coordinate == 2);
+}
+
+TEST_CASE("the sobol sampler's joint sets are points of one Sobol sequence", "[unit][ch09]") {
+    SobolSampler sampler;
+    sampler.set_seed(21);
+    require_joint_sets_are_sobol_points(sampler, "sobol");
+}
+
+TEST_CASE("the zsobol sampler's joint sets are points of one Sobol sequence", "[unit][ch09]") {
+    for (std::uint64_t planned : {std::uint64_t{256}, std::uint64_t{0}}) {
+        ZSobolSampler sampler;
+        sampler.set_seed(21);
+        sampler.plan_render(64, 64, planned);
+        require_joint_sets_are_sobol_points(sampler, "zsobol planned for " + std::to_string(planned) + " spp");
+    }
 }

@@ -3,6 +3,7 @@
 
 #include "freezeray/error.hpp"
 #include "freezeray/ch09/fixed_point.hpp"
+#include "freezeray/ch09/radical_inverse.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -70,29 +71,41 @@ GeneratorMatrix sobol_generator_matrix(int dimension) {
 }
 // END BOOK
 
+namespace {
+
+// Every dimension's byte tables, of the matrix's columns as `column` gives them.
+template <typename Column>
+std::vector<SobolByteTables> byte_tables(Column column) {
+    std::vector<SobolByteTables> t(SobolDimensions);
+    for (int d = 0; d < SobolDimensions; ++d) {
+        const GeneratorMatrix v = sobol_generator_matrix(d);
+        for (int byte = 0; byte < 4; ++byte)
+            for (std::uint32_t value = 0; value < 256; ++value) {
+                std::uint32_t x = 0;
+                for (int bit = 0; bit < 8; ++bit)
+                    if (value & (1u << bit)) x ^= column(v, 8 * byte + bit);
+                t[static_cast<std::size_t>(d)][static_cast<std::size_t>(byte)][value] = x;
+            }
+    }
+    return t;
+}
+
+}  // namespace
+
 std::uint32_t sobol_sample_bits(std::uint32_t index, int dimension) {
-    // The product of the matrix and the index, a byte of the index at a time: for each of the
-    // four bytes, the XOR of the columns of its set bits, for all 256 byte values, is tabulated
-    // once (4 KB per dimension). A path tracer draws these at every vertex; the loop over 32
-    // index bits costs more than the rest of a sample's draw.
-    using ByteTables = std::array<std::array<std::uint32_t, 256>, 4>;
-    static const auto tables = [] {
-        std::vector<ByteTables> t(SobolDimensions);
-        for (int d = 0; d < SobolDimensions; ++d) {
-            const GeneratorMatrix v = sobol_generator_matrix(d);
-            for (int byte = 0; byte < 4; ++byte)
-                for (std::uint32_t value = 0; value < 256; ++value) {
-                    std::uint32_t x = 0;
-                    for (int bit = 0; bit < 8; ++bit)
-                        if (value & (1u << bit)) x ^= v[static_cast<std::size_t>(8 * byte + bit)];
-                    t[static_cast<std::size_t>(d)][static_cast<std::size_t>(byte)][value] = x;
-                }
-        }
-        return t;
-    }();
+    // A byte of the index at a time (multiply_by_bytes): a path tracer draws these at every
+    // vertex; the loop over 32 index bits costs more than the rest of a sample's draw.
+    static const std::vector<SobolByteTables> tables =
+        byte_tables([](const GeneratorMatrix& v, int k) { return v[static_cast<std::size_t>(k)]; });
     check_dimension(dimension);
-    const ByteTables& t = tables[static_cast<std::size_t>(dimension)];
-    return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
+    return multiply_by_bytes(tables[static_cast<std::size_t>(dimension)], index);
+}
+
+const SobolByteTables* reversed_sobol_tables() {
+    // Bit k of the reversed index is bit 31 - k of the index, whose column, reversed, it adds.
+    static const std::vector<SobolByteTables> tables =
+        byte_tables([](const GeneratorMatrix& v, int k) { return reverse_bits(v[static_cast<std::size_t>(31 - k)]); });
+    return tables.data();
 }
 
 float sobol_sample(std::uint32_t index, int dimension) { return fraction_to_float(sobol_sample_bits(index, dimension)); }

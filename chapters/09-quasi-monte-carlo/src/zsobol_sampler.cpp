@@ -5,7 +5,7 @@
 #include "freezeray/ch09/fixed_point.hpp"
 #include "freezeray/ch09/owen_scrambling.hpp"
 #include "freezeray/ch09/radical_inverse.hpp"
-#include "freezeray/ch09/sobol_matrices.hpp"
+#include "freezeray/ch09/scrambled_sobol.hpp"
 #include "freezeray/random.hpp"
 
 #include <algorithm>
@@ -62,12 +62,13 @@ void ZSobolSampler::begin(int x, int y, std::uint32_t pixel_index, std::uint64_t
 }
 
 // BOOK(zsobol-index)
-std::uint32_t ZSobolSampler::sequence_index(std::uint32_t dimension, std::uint64_t key) {
-    Block& block = blocks_[dimension];
+std::uint32_t ZSobolSampler::sequence_index(std::uint32_t set) {
+    Block& block = blocks_[set];
     if (block.stamp != stamp_) {
         // The Morton code's base-4 digits from the top (one digit: which quarter of its parent
         // square the pixel is in), each permuted by a permutation chosen by the digits above it:
         // Owen scrambling in base 4. Pixels under one parent keep their parent's block.
+        const std::uint64_t key = dimension_key(set);
         std::uint32_t permuted = 0;
         for (int level = tile_log2_ - 1; level >= 0; --level) {
             const std::uint32_t digit = (morton_ >> (2 * level)) & 3u;
@@ -88,22 +89,22 @@ std::uint32_t ZSobolSampler::sequence_index(std::uint32_t dimension, std::uint64
     return block.start | within;
 }
 
-float ZSobolSampler::sample_1d(std::uint32_t dimension) {
-    if (dimension >= QuasiRandomDimensions) return hashed_random(dimension);
-    const std::uint64_t key = dimension_key(dimension);
-    const std::uint32_t index = sequence_index(dimension, key);
+float ZSobolSampler::sample_1d(const DrawPlace& place) {
+    if (place.dimension >= QuasiRandomDimensions) return hashed_random(place.dimension);
+    const std::uint32_t index = reverse_bits(sequence_index(place.set));
     // One Owen scramble per dimension for the whole tile: a scramble per pixel would undo the
     // quads' complementary blocks.
-    return fraction_to_float(scrambled_van_der_corput(index, static_cast<std::uint32_t>(key >> 32)));
+    const auto scramble_seed = static_cast<std::uint32_t>(dimension_key(place.dimension) >> 32);
+    return fraction_to_float(scrambled_sobol_coordinate(tables_, index, place.coordinate, scramble_seed));
 }
 
-Vec2 ZSobolSampler::sample_2d(std::uint32_t dimension) {
-    if (dimension + 1 >= QuasiRandomDimensions) return Vec2(hashed_random(dimension), hashed_random(dimension + 1));
-    const std::uint64_t key = dimension_key(dimension);
-    const std::uint32_t index = sequence_index(dimension, key);
-    const auto scramble_seed = static_cast<std::uint32_t>(key >> 32);
-    return Vec2(fraction_to_float(scrambled_van_der_corput(index, hash_combine(scramble_seed, 0))),
-                fraction_to_float(nested_uniform_scramble(sobol_sample_bits(index, 1), hash_combine(scramble_seed, 1))));
+Vec2 ZSobolSampler::sample_2d(const DrawPlace& place) {
+    if (place.dimension + 1 >= QuasiRandomDimensions)
+        return Vec2(hashed_random(place.dimension), hashed_random(place.dimension + 1));
+    const std::uint32_t index = reverse_bits(sequence_index(place.set));
+    const auto scramble_seed = static_cast<std::uint32_t>(dimension_key(place.dimension) >> 32);
+    return Vec2(fraction_to_float(scrambled_sobol_coordinate(tables_, index, place.coordinate, hash_combine(scramble_seed, 0))),
+                fraction_to_float(scrambled_sobol_coordinate(tables_, index, place.coordinate + 1, hash_combine(scramble_seed, 1))));
 }
 // END BOOK
 

@@ -46,13 +46,6 @@ inline std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed
 }
 // END BOOK
 
-// The nested scramble of the van der Corput point of `index` (Sobol dimension 0: the index's bits
-// reversed), nested_uniform_scramble(reverse_bits(index), seed): the two reversals in between
-// cancel, so it is the permutation of the index itself, reversed. Two fewer reversals per draw.
-inline std::uint32_t scrambled_van_der_corput(std::uint32_t index, std::uint32_t seed) {
-    return reverse_bits(laine_karras_permutation(index, seed));
-}
-
 // The seed of one scramble from several values (Burley 2020's hash_combine, a Boost-style mix).
 inline std::uint32_t hash_combine(std::uint32_t seed, std::uint32_t value) {
     return seed ^ (value + 0x9e3779b9u + (seed << 6) + (seed >> 2));

@@ -25,8 +25,9 @@ public:
 
 protected:
     void begin(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) override;
-    float sample_1d(std::uint32_t dimension) override;
-    Vec2 sample_2d(std::uint32_t dimension) override;
+    // Each dimension stratified on its own: a draw's joint set is not read.
+    float sample_1d(const DrawPlace& place) override;
+    Vec2 sample_2d(const DrawPlace& place) override;
 
 private:
     std::uint32_t stratum(std::uint32_t dimension) const;

@@ -4,6 +4,7 @@
 // Jakob and Humphreys, "Physically Based Rendering", 4th edition, 2023, section 8.7.7).
 #pragma once
 
+#include "freezeray/ch09/scrambled_sobol.hpp"
 #include "freezeray/ch09/sobol_sampler.hpp"
 #include "freezeray/sampler.hpp"
 
@@ -23,11 +24,12 @@ namespace freezeray::ch09 {
 //
 // Randomized as Owen scrambling is, but in base 4 over the pixels: each base-4 digit of the
 // Morton code is permuted by one of the 24 permutations of {0, 1, 2, 3}, chosen by a hash of the
-// digits above it and the dimension, so the quads take their blocks in a random order that is
-// different for every dimension (which decorrelates the dimensions, as the sobol sampler's
-// per-dimension shuffle does); the sample's number within its pixel is shuffled by a nested
-// scramble, so that the first 2^m samples of a pixel are always one block of 2^m points, a net;
-// then every point is Owen-scrambled, with one seed for the whole tile per dimension.
+// digits above it and the joint set (sampler.hpp), so the quads take their blocks in a random
+// order that is different for every set (which decorrelates the sets, as the sobol sampler's
+// per-set shuffle does); the sample's number within its pixel is shuffled by a nested scramble,
+// so that the first 2^m samples of a pixel are always one block of 2^m points, a net; then every
+// coordinate is Owen-scrambled, with one seed for the whole tile per dimension. A set's draws are
+// coordinates 0, 1, 2, ... of one point, as in the sobol sampler.
 //
 // The block size 2^L must be known before the render: it is the planned samples per pixel
 // rounded up to a power of two (plan_render). With a time budget or a target error the count is
@@ -49,12 +51,12 @@ public:
 
 protected:
     void begin(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) override;
-    float sample_1d(std::uint32_t dimension) override;
-    Vec2 sample_2d(std::uint32_t dimension) override;
+    float sample_1d(const DrawPlace& place) override;
+    Vec2 sample_2d(const DrawPlace& place) override;
 
 private:
-    // The sequence index of this sample's draw at `dimension`, and that draw's scramble seed.
-    std::uint32_t sequence_index(std::uint32_t dimension, std::uint64_t key);
+    // The sequence index of this sample's draws of the joint set `set`.
+    std::uint32_t sequence_index(std::uint32_t set);
     std::uint64_t dimension_key(std::uint32_t dimension) const { return mix_bits(tile_key_ + dimension); }
     float hashed_random(std::uint32_t dimension) const;
 
@@ -66,8 +68,8 @@ private:
     std::uint32_t morton_ = 0;           // the pixel's Morton code within its tile
     std::uint32_t index_in_epoch_ = 0;
 
-    // The pixel's block, per dimension: its digits' permutation depends on the pixel and the
-    // dimension only, so it is computed once for all the samples a pass renders in a pixel.
+    // The pixel's block, per joint set: its digits' permutation depends on the pixel and the set
+    // only, so it is computed once for all the samples a pass renders in a pixel.
     struct Block {
         std::uint64_t stamp = 0;
         std::uint32_t start = 0;           // the permuted Morton code, shifted left by L
@@ -75,6 +77,7 @@ private:
     };
     std::array<Block, QuasiRandomDimensions> blocks_{};
     std::uint64_t stamp_ = 0;  // which (seed, pixel, epoch) blocks_ holds: a block is valid if its stamp is this
+    const SobolByteTables* tables_ = joint_coordinate_tables();
     int last_x_ = -1, last_y_ = -1;
     std::uint64_t last_epoch_ = 0, last_seed_ = 0;
 };

@@ -1,0 +1,38 @@
+// One coordinate of an Owen-scrambled Sobol point, as the chapter's samplers draw it (book
+// chapter 09; Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4), 2020).
+#pragma once
+
+#include "freezeray/ch09/owen_scrambling.hpp"
+#include "freezeray/ch09/radical_inverse.hpp"
+#include "freezeray/ch09/sobol_matrices.hpp"
+#include "freezeray/sampler.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace freezeray::ch09 {
+
+// The Sobol dimension that coordinate c of a joint set's point takes (sampler.hpp numbers a set's
+// coordinates by importance, a pair as c and c + 1). Sets of up to three coordinates take
+// dimensions 0, 1, 2, whose first pair is a (0, 2)-sequence. The path set's pairs beyond its
+// second take the pairs of the remaining dimensions that are the best nets together, (4, 6),
+// (5, 7) and (9, 14): each a (2, m, 2)-net for every m <= 12, where (4, 5), (7, 8) and (9, 10)
+// have t of 3, 3 and 4 (book chapter 09, "Drawing jointly").
+constexpr std::array<int, MaxJointCoordinates> JointCoordinateDimension = {0, 1, 2, 3, 4, 6, 8, 5, 7, 9, 14, 10, 11, 12, 13};
+
+// The reversed tables (reversed_sobol_tables) of each coordinate's dimension, in coordinate order.
+const SobolByteTables* joint_coordinate_tables();
+
+// Coordinate `c` of the Sobol point whose index, its bits reversed, is `reversed_index`,
+// Owen-scrambled by `seed`, as a 0.32 fraction: nested_uniform_scramble(sobol_sample_bits(i, d),
+// seed) for i = reverse_bits(reversed_index) and d = JointCoordinateDimension[c]. The scramble
+// reverses the point, permutes it and reverses it back; the reversed point is the reversed matrix
+// (`coordinate_tables`, from joint_coordinate_tables()) times the reversed index, so one reversal
+// is left of three.
+inline std::uint32_t scrambled_sobol_coordinate(const SobolByteTables* coordinate_tables, std::uint32_t reversed_index,
+                                                std::uint32_t c, std::uint32_t seed) {
+    const std::uint32_t reversed_point = multiply_by_bytes(coordinate_tables[c], reversed_index);
+    return reverse_bits(laine_karras_permutation(reversed_point, seed));
+}
+
+}  // namespace freezeray::ch09
