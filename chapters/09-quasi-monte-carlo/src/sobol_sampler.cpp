@@ -10,15 +10,28 @@
 namespace freezeray::ch09 {
 
 void SobolSampler::begin(int, int, std::uint32_t pixel_index, std::uint64_t sample_index) {
-    pixel_key_ = pixel_key(seed(), pixel_index, 0x5851f42d4c957f2dULL);
+    if (pixel_stamp_ == 0 || pixel_index != last_pixel_index_ || seed() != last_seed_) {
+        pixel_key_ = pixel_key(seed(), pixel_index, 0x5851f42d4c957f2dULL);
+        last_pixel_index_ = pixel_index;
+        last_seed_ = seed();
+        ++pixel_stamp_;  // every dimension's key is stale
+    }
     sample_index_ = sample_index;
     reversed_sample_index_ = reverse_bits(static_cast<std::uint32_t>(sample_index));
     ++sample_stamp_;
 }
 
-std::uint64_t SobolSampler::dimension_key(std::uint32_t dimension) const { return mix_bits(pixel_key_ + dimension); }
+std::uint64_t SobolSampler::dimension_key(std::uint32_t dimension) {
+    if (dimension >= QuasiRandomDimensions) return mix_bits(pixel_key_ + dimension);
+    DimensionKey& cached = keys_[dimension];
+    if (cached.stamp != pixel_stamp_) {
+        cached.key = mix_bits(pixel_key_ + dimension);
+        cached.stamp = pixel_stamp_;
+    }
+    return cached.key;
+}
 
-float SobolSampler::hashed_random(std::uint32_t dimension) const {
+float SobolSampler::hashed_random(std::uint32_t dimension) {
     return hashed_uniform(mix_bits(dimension_key(dimension) ^ mix_bits(sample_index_)));
 }
 

@@ -36,8 +36,10 @@ protected:
     Vec2 sample_2d(const DrawPlace& place) override;
 
 private:
-    std::uint64_t dimension_key(std::uint32_t dimension) const;
-    float hashed_random(std::uint32_t dimension) const;
+    // The hash of (seed, pixel, dimension) that seeds the dimension's scramble and, for a set's
+    // first dimension, the set's shuffle.
+    std::uint64_t dimension_key(std::uint32_t dimension);
+    float hashed_random(std::uint32_t dimension);
     // The pixel's sample index shuffled for the joint set `set`, its bits reversed.
     std::uint32_t reversed_shuffled_index(std::uint32_t set);
 
@@ -51,6 +53,16 @@ private:
     };
     std::array<ShuffledIndex, QuasiRandomDimensions> shuffled_{};
     std::uint64_t sample_stamp_ = 0;
+    // Each dimension's key, valid for the pixel whose stamp it carries: a render's pass takes a
+    // pixel's samples one after another, and they share their keys.
+    struct DimensionKey {
+        std::uint64_t stamp = 0;
+        std::uint64_t key = 0;
+    };
+    std::array<DimensionKey, QuasiRandomDimensions> keys_{};
+    std::uint64_t pixel_stamp_ = 0;
+    std::uint32_t last_pixel_index_ = 0;
+    std::uint64_t last_seed_ = 0;
     const SobolByteTables* tables_ = joint_coordinate_tables();
 };
 
