@@ -182,14 +182,14 @@ TEST_CASE("a nested uniform scramble flips each bit by a function of the bits ab
 TEST_CASE("a scrambled Sobol coordinate from the reversed tables is the nested scramble of the point", "[unit][ch09]") {
     // The samplers stay in reversed bit order from the shuffled index to the scramble
     // (scrambled_sobol.hpp); the number must be the one the definitions give.
-    const SobolByteTables* tables = reversed_sobol_tables();
+    const SobolNibbleTables* tables = reversed_sobol_tables();
     PCG32 random(12, 5);
     for (int trial = 0; trial < 100000; ++trial) {
         const std::uint32_t index = trial < 1024 ? static_cast<std::uint32_t>(trial) : random.next_uint();
         const std::uint32_t seed = random.next_uint();
         const auto c = static_cast<std::uint32_t>(trial % SobolDimensions);
         INFO("index " << index << ", coordinate " << c);
-        REQUIRE(multiply_by_bytes(tables[c], reverse_bits(index)) == reverse_bits(sobol_sample_bits(index, static_cast<int>(c))));
+        REQUIRE(multiply_by_nibbles(tables[c], reverse_bits(index)) == reverse_bits(sobol_sample_bits(index, static_cast<int>(c))));
         REQUIRE(scrambled_sobol_coordinate(tables, reverse_bits(index), c, seed) ==
                 nested_uniform_scramble(sobol_sample_bits(index, static_cast<int>(c)), seed));
         // The samplers' tables, in the order of a joint set's coordinates.

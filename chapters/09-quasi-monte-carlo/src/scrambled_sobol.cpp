@@ -5,9 +5,9 @@ namespace freezeray::ch09 {
 
 static_assert(MaxJointCoordinates <= SobolDimensions, "every coordinate of a joint set needs a Sobol dimension");
 
-const SobolByteTables* joint_coordinate_tables() {
-    static const std::array<SobolByteTables, MaxJointCoordinates> tables = [] {
-        std::array<SobolByteTables, MaxJointCoordinates> t{};
+const SobolNibbleTables* joint_coordinate_tables() {
+    static const std::array<SobolNibbleTables, MaxJointCoordinates> tables = [] {
+        std::array<SobolNibbleTables, MaxJointCoordinates> t{};
         for (std::size_t c = 0; c < MaxJointCoordinates; ++c) t[c] = reversed_sobol_tables()[JointCoordinateDimension[c]];
         return t;
     }();

@@ -73,18 +73,19 @@ GeneratorMatrix sobol_generator_matrix(int dimension) {
 
 namespace {
 
-// Every dimension's byte tables, of the matrix's columns as `column` gives them.
-template <typename Column>
-std::vector<SobolByteTables> byte_tables(Column column) {
-    std::vector<SobolByteTables> t(SobolDimensions);
+// Every dimension's tables of the XORs of `Bits` columns at a time, of the matrix's columns as
+// `column` gives them.
+template <int Bits, typename Column>
+std::vector<std::array<std::array<std::uint32_t, 1u << Bits>, 32 / Bits>> chunk_tables(Column column) {
+    std::vector<std::array<std::array<std::uint32_t, 1u << Bits>, 32 / Bits>> t(SobolDimensions);
     for (int d = 0; d < SobolDimensions; ++d) {
         const GeneratorMatrix v = sobol_generator_matrix(d);
-        for (int byte = 0; byte < 4; ++byte)
-            for (std::uint32_t value = 0; value < 256; ++value) {
+        for (int chunk = 0; chunk < 32 / Bits; ++chunk)
+            for (std::uint32_t value = 0; value < (1u << Bits); ++value) {
                 std::uint32_t x = 0;
-                for (int bit = 0; bit < 8; ++bit)
-                    if (value & (1u << bit)) x ^= column(v, 8 * byte + bit);
-                t[static_cast<std::size_t>(d)][static_cast<std::size_t>(byte)][value] = x;
+                for (int bit = 0; bit < Bits; ++bit)
+                    if (value & (1u << bit)) x ^= column(v, Bits * chunk + bit);
+                t[static_cast<std::size_t>(d)][static_cast<std::size_t>(chunk)][value] = x;
             }
     }
     return t;
@@ -93,18 +94,19 @@ std::vector<SobolByteTables> byte_tables(Column column) {
 }  // namespace
 
 std::uint32_t sobol_sample_bits(std::uint32_t index, int dimension) {
-    // A byte of the index at a time (multiply_by_bytes): a path tracer draws these at every
-    // vertex; the loop over 32 index bits costs more than the rest of a sample's draw.
-    static const std::vector<SobolByteTables> tables =
-        byte_tables([](const GeneratorMatrix& v, int k) { return v[static_cast<std::size_t>(k)]; });
+    // The product of the matrix and the index, a byte of the index at a time: for each of the
+    // four bytes, the XOR of the columns of its set bits, for all 256 byte values, is tabulated
+    // once (4 KB per dimension); the loop over 32 index bits would cost more.
+    static const auto tables = chunk_tables<8>([](const GeneratorMatrix& v, int k) { return v[static_cast<std::size_t>(k)]; });
     check_dimension(dimension);
-    return multiply_by_bytes(tables[static_cast<std::size_t>(dimension)], index);
+    const auto& t = tables[static_cast<std::size_t>(dimension)];
+    return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
 }
 
-const SobolByteTables* reversed_sobol_tables() {
+const SobolNibbleTables* reversed_sobol_tables() {
     // Bit k of the reversed index is bit 31 - k of the index, whose column, reversed, it adds.
-    static const std::vector<SobolByteTables> tables =
-        byte_tables([](const GeneratorMatrix& v, int k) { return reverse_bits(v[static_cast<std::size_t>(31 - k)]); });
+    static const auto tables =
+        chunk_tables<4>([](const GeneratorMatrix& v, int k) { return reverse_bits(v[static_cast<std::size_t>(31 - k)]); });
     return tables.data();
 }
 

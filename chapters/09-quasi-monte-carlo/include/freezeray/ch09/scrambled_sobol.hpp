@@ -21,7 +21,7 @@ namespace freezeray::ch09 {
 constexpr std::array<int, MaxJointCoordinates> JointCoordinateDimension = {0, 1, 2, 3, 4, 6, 8, 5, 7, 9, 14, 10, 11, 12, 13};
 
 // The reversed tables (reversed_sobol_tables) of each coordinate's dimension, in coordinate order.
-const SobolByteTables* joint_coordinate_tables();
+const SobolNibbleTables* joint_coordinate_tables();
 
 // Coordinate `c` of the Sobol point whose index, its bits reversed, is `reversed_index`,
 // Owen-scrambled by `seed`, as a 0.32 fraction: nested_uniform_scramble(sobol_sample_bits(i, d),
@@ -29,9 +29,13 @@ const SobolByteTables* joint_coordinate_tables();
 // reverses the point, permutes it and reverses it back; the reversed point is the reversed matrix
 // (`coordinate_tables`, from joint_coordinate_tables()) times the reversed index, so one reversal
 // is left of three.
-inline std::uint32_t scrambled_sobol_coordinate(const SobolByteTables* coordinate_tables, std::uint32_t reversed_index,
+inline std::uint32_t scrambled_sobol_coordinate(const SobolNibbleTables* coordinate_tables, std::uint32_t reversed_index,
                                                 std::uint32_t c, std::uint32_t seed) {
-    const std::uint32_t reversed_point = multiply_by_bytes(coordinate_tables[c], reversed_index);
+    // Sobol dimension 0 is the index reversed (the van der Corput sequence), so its reversed
+    // point is the index: no table.
+    static_assert(JointCoordinateDimension[0] == 0);
+    const std::uint32_t reversed_point =
+        c == 0 ? reverse_bits(reversed_index) : multiply_by_nibbles(coordinate_tables[c], reversed_index);
     return reverse_bits(laine_karras_permutation(reversed_point, seed));
 }
 

@@ -63,7 +63,7 @@ private:
     std::uint64_t pixel_stamp_ = 0;
     std::uint32_t last_pixel_index_ = 0;
     std::uint64_t last_seed_ = 0;
-    const SobolByteTables* tables_ = joint_coordinate_tables();
+    const SobolNibbleTables* tables_ = joint_coordinate_tables();
 };
 
 }  // namespace freezeray::ch09

@@ -77,7 +77,7 @@ private:
     };
     std::array<Block, QuasiRandomDimensions> blocks_{};
     std::uint64_t stamp_ = 0;  // which (seed, pixel, epoch) blocks_ holds: a block is valid if its stamp is this
-    const SobolByteTables* tables_ = joint_coordinate_tables();
+    const SobolNibbleTables* tables_ = joint_coordinate_tables();
     int last_x_ = -1, last_y_ = -1;
     std::uint64_t last_epoch_ = 0, last_seed_ = 0;
 };
