@@ -499,22 +499,25 @@ int net_t_value(const std::vector<std::vector<float>>& points, const std::vector
     return m;
 }
 
+// Every draw a vertex of the per-vertex layout makes, and which of them are pairs.
+constexpr VertexDimension VertexDraws[] = {VertexDimension::LightChoice, VertexDimension::LightPosition,
+                                           VertexDimension::BsdfDirection, VertexDimension::BsdfLobe,
+                                           VertexDimension::Roulette};
+bool is_pair(VertexDimension d) { return d == VertexDimension::LightPosition || d == VertexDimension::BsdfDirection; }
+
 // Samples [first, first + count) of pixel 5: every draw of the per-vertex layout whose place is
 // in joint set `set`, at its coordinates (a point per sample).
 std::vector<std::vector<float>> joint_set_points(Sampler& s, std::uint32_t set, std::uint64_t first, std::uint64_t count) {
-    constexpr VertexDimension draws[] = {VertexDimension::LightChoice, VertexDimension::LightPosition,
-                                         VertexDimension::BsdfDirection, VertexDimension::BsdfLobe,
-                                         VertexDimension::Roulette};
     std::vector<std::vector<float>> points;
     for (std::uint64_t i = first; i < first + count; ++i) {
         s.start_pixel_sample(5, 0, 5, i);
         std::vector<float> p(MaxJointCoordinates, -1.0f);
         for (int vertex = 1; vertex <= QuasiRandomVertices; ++vertex) {
             s.start_vertex(vertex);
-            for (VertexDimension d : draws) {
+            for (VertexDimension d : VertexDraws) {
                 const DrawPlace place = vertex_draw_place(vertex, d);
                 if (place.set != set) continue;
-                if (d == VertexDimension::LightPosition || d == VertexDimension::BsdfDirection) {
+                if (is_pair(d)) {
                     const Vec2 u = s.get_2d(d);
                     p[place.coordinate] = u.x;
                     p[place.coordinate + 1] = u.y;
@@ -577,10 +580,9 @@ TEST_CASE("the per-vertex layout gives every draw its own dimension and coordina
     std::set<std::uint32_t> dimensions;
     std::set<std::pair<std::uint32_t, std::uint32_t>> coordinates;  // (set, coordinate)
     for (int vertex = 1; vertex <= QuasiRandomVertices + 2; ++vertex)
-        for (VertexDimension d : {VertexDimension::LightChoice, VertexDimension::LightPosition, VertexDimension::BsdfDirection,
-                                  VertexDimension::BsdfLobe, VertexDimension::Roulette}) {
+        for (VertexDimension d : VertexDraws) {
             const DrawPlace place = vertex_draw_place(vertex, d);
-            const bool pair = d == VertexDimension::LightPosition || d == VertexDimension::BsdfDirection;
+            const bool pair = is_pair(d);
             INFO("vertex " << vertex << ", draw " << static_cast<int>(d));
             CHECK(place.dimension == CameraDimensions + DimensionsPerVertex * (vertex - 1) + static_cast<std::uint32_t>(d));
             for (std::uint32_t k = 0; k < (pair ? 2u : 1u); ++k) {

@@ -65,8 +65,7 @@ Vec2 SobolSampler::sample_2d(const DrawPlace& place) {
         return Vec2(hashed_random(place.dimension), hashed_random(place.dimension + 1));
     const std::uint32_t index = reversed_shuffled_index(place.set);
     const auto scramble_seed = static_cast<std::uint32_t>(dimension_key(place.dimension) >> 32);
-    return Vec2(fraction_to_float(scrambled_sobol_coordinate(tables_, index, place.coordinate, hash_combine(scramble_seed, 0))),
-                fraction_to_float(scrambled_sobol_coordinate(tables_, index, place.coordinate + 1, hash_combine(scramble_seed, 1))));
+    return scrambled_sobol_pair(tables_, index, place.coordinate, scramble_seed);
 }
 // END BOOK
 

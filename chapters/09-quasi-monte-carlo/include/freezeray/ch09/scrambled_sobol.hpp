@@ -2,9 +2,11 @@
 // chapter 09; Burley, "Practical Hash-based Owen Scrambling", JCGT 9(4), 2020).
 #pragma once
 
+#include "freezeray/ch09/fixed_point.hpp"
 #include "freezeray/ch09/owen_scrambling.hpp"
 #include "freezeray/ch09/radical_inverse.hpp"
 #include "freezeray/ch09/sobol_matrices.hpp"
+#include "freezeray/math.hpp"
 #include "freezeray/sampler.hpp"
 
 #include <array>
@@ -37,6 +39,14 @@ inline std::uint32_t scrambled_sobol_coordinate(const SobolNibbleTables* coordin
     const std::uint32_t reversed_point =
         c == 0 ? reverse_bits(reversed_index) : multiply_by_nibbles(coordinate_tables[c], reversed_index);
     return reverse_bits(laine_karras_permutation(reversed_point, seed));
+}
+
+// Coordinates c and c + 1 of that point in [0, 1), each its own scramble of `seed` (Burley's
+// hash_combine): a sampler's 2D draw.
+inline Vec2 scrambled_sobol_pair(const SobolNibbleTables* coordinate_tables, std::uint32_t reversed_index, std::uint32_t c,
+                                 std::uint32_t seed) {
+    return Vec2(fraction_to_float(scrambled_sobol_coordinate(coordinate_tables, reversed_index, c, hash_combine(seed, 0))),
+                fraction_to_float(scrambled_sobol_coordinate(coordinate_tables, reversed_index, c + 1, hash_combine(seed, 1))));
 }
 
 }  // namespace freezeray::ch09

@@ -18,11 +18,11 @@ constexpr std::uint32_t QuasiRandomDimensions = CameraDimensions + DimensionsPer
 // Every draw is one or two coordinates of a point of the Sobol sequence: the point at the pixel
 // sample's index shuffled, each coordinate Owen-scrambled. The shuffle is seeded by (seed, pixel,
 // the draw's joint set), each scramble by (seed, pixel, the draw's dimension). A set's draws take
-// coordinates 0, 1, 2, ... of one point, Sobol dimensions 0, 1, 2, ...; every set's first pair is
-// Sobol dimensions 0 and 1, which together are a (0, 2)-sequence: every 2^m consecutive points
-// from a multiple of 2^m stratify the unit square in every way a 2^m-point set can. So each set
-// is stratified over a pixel's samples, and different sets, and different pixels, are
-// independent of each other: the padding of Kollig and Keller ("Efficient multidimensional
+// coordinates 0, 1, 2, ... of one point, from the Sobol dimensions JointCoordinateDimension gives
+// (scrambled_sobol.hpp); every set's first pair is Sobol dimensions 0 and 1, which together are a
+// (0, 2)-sequence: every 2^m consecutive points from a multiple of 2^m stratify the unit square
+// in every way a 2^m-point set can. So each set is stratified over a pixel's samples, and
+// different sets, and different pixels, are independent of each other: the padding of Kollig and Keller ("Efficient multidimensional
 // sampling", 2002), by sets rather than by pairs. The shuffle is itself a nested scramble of the
 // index, so the first 2^m samples of a pixel are always 2^m points of a net, whatever m: renders
 // may stop at any time and be resumed.
