@@ -2,6 +2,7 @@
 // pbrt-v3, section 16.4).
 #include "freezeray/ch05/metropolis_light_transport.hpp"
 
+#include "freezeray/cache_line_allocator.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/parallel.hpp"
 #include "freezeray/progress.hpp"
@@ -36,7 +37,9 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
 }
 
 // One Markov chain: its state (the primary samples and what they evaluate to) and its counts.
-struct Chain {
+// Neighbouring chains mutate at the same time on different threads: each starts on a cache line
+// of its own, so that one's counters never share a line with the next one's state (see Sampler).
+struct alignas(CacheLineBytes) Chain {
     PrimarySamples samples;
     int segments = 0;  // multiplexed MLT: the chain's path length (fixed: chosen by its start)
     PCG32 acceptance;

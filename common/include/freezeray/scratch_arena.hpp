@@ -2,6 +2,8 @@
 // tracing a ray never touches the heap.
 #pragma once
 
+#include "freezeray/cache_line_allocator.hpp"
+
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -11,7 +13,9 @@
 
 namespace freezeray {
 
-class ScratchArena {
+// Aligned to a cache line, so that the render threads' arenas, which sit side by side in one
+// vector and move their `used_` on every allocation, never share a line (see Sampler).
+class alignas(CacheLineBytes) ScratchArena {
 public:
     explicit ScratchArena(std::size_t bytes = 64 * 1024) : buffer_(new std::byte[bytes]), capacity_(bytes) {}
 

@@ -3,6 +3,7 @@
 // chapter 16). Its image is bit-identical for a given seed whatever the thread count.
 #pragma once
 
+#include "freezeray/cache_line_allocator.hpp"
 #include "freezeray/film.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/math.hpp"
@@ -20,8 +21,9 @@ namespace freezeray::ch04 {
 // unit order (SplatFilm::add), so every pixel sees the same additions in the same order for any
 // thread count. Fixed-point integer atomics would also be order-independent, but need a range
 // fixed in advance, and light tracing's splats have no useful bound (We grows like 1/cos^4 at the
-// film's corners, 1/r^2 near the lights).
-class SplatBuffer {
+// film's corners, 1/r^2 near the lights). Neighbouring work units run at the same time on
+// different threads, so each buffer starts on a cache line of its own (see Sampler).
+class alignas(CacheLineBytes) SplatBuffer {
 public:
     struct Splat {
         std::uint32_t pixel;  // y * width + x
