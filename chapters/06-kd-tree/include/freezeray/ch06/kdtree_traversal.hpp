@@ -164,7 +164,9 @@ void traverse(const KdTree& tree, const Ray& ray, const Walk& walk, Counter& cou
         parallel[axis] = std::isinf(inverse_direction[axis]);
         crossing[axis] = beam.radius * std::abs(inverse_direction[axis]);
     }
-    TraversalTask stack[TraversalStackSize];  // the build keeps the depth within it
+    // The build keeps the depth within TraversalStackSize; the one more entry takes the far child
+    // written, and not kept, at a full stack.
+    TraversalTask stack[TraversalStackSize + 1];
     int top = 0;
     std::uint32_t index = 0;
     float skip_after = std::numeric_limits<float>::infinity();
@@ -201,16 +203,19 @@ void traverse(const KdTree& tree, const Ray& ray, const Walk& walk, Counter& cou
             const float dt = crossing[axis];
             const float first_until = order.t_plane + dt, second_from = order.t_plane - dt;
             const bool first = first_until >= t_min, second = second_from <= t_max;
-            if (first && second) {
-                stack[top++] = {order.far_child, std::max(t_min, second_from), t_max};
-                index = order.near_child;
-                t_max = std::min(t_max, first_until);
-            } else if (first) {
-                index = order.near_child;
-            } else {
-                index = order.far_child;
-                t_min = std::max(t_min, second_from);
-            }
+            // Three cases: both children (the near one now, the far one on the stack), the near
+            // one alone, or the far one alone (when the first is false). Written with selects, not
+            // branches: which case comes next is a coin toss for incoherent rays, and a
+            // mispredicted branch costs more than the work it skips (book chapter 06, "Branches
+            // or selects"). The far child is written to the stack every time and kept only when
+            // both are visited. With the near child alone, first_until >= t_max (the second is
+            // false: second_from > t_max), so the min leaves t_max as it is.
+            const float far_from = std::max(t_min, second_from);
+            stack[top] = {order.far_child, far_from, t_max};
+            top += static_cast<int>(first && second);
+            index = first ? order.near_child : order.far_child;
+            t_min = first ? t_min : far_from;
+            t_max = first ? std::min(t_max, first_until) : t_max;
             continue;
         }
         const float wanted = visit_leaf(node);
