@@ -164,9 +164,10 @@ void traverse(const KdTree& tree, const Ray& ray, const Walk& walk, Counter& cou
         parallel[axis] = std::isinf(inverse_direction[axis]);
         crossing[axis] = beam.radius * std::abs(inverse_direction[axis]);
     }
-    // The build keeps the depth within TraversalStackSize; the one more entry takes the far child
-    // written, and not kept, at a full stack.
-    TraversalTask stack[TraversalStackSize + 1];
+    // The build makes every node at depth TraversalStackSize or deeper a leaf, and the walk pushes
+    // at most one entry per level: at an interior node of depth d the stack holds at most d
+    // entries, so the far child written at its top always fits.
+    TraversalTask stack[TraversalStackSize];
     int top = 0;
     std::uint32_t index = 0;
     float skip_after = std::numeric_limits<float>::infinity();
