@@ -6,6 +6,7 @@
 #include "freezeray/progress.hpp"
 #include "freezeray/render_state.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/sds_probe.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -98,6 +99,55 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
         if (!scene.effects.delta_lights || c.integrator->samples_lights()) usable.push_back(&c);
     if (usable.empty()) throw InputError("--integrator", "auto has no candidate that can render this scene's lights");
 
+    // BOOK(auto-sds)
+    // Specular-diffuse-specular paths (sds_probe.hpp): where they light more than SdsShareLimit
+    // of the image, the candidates that sample every path from scratch have a tail of rare, very
+    // bright samples that their pilots seldom meet and so cannot measure. The chains, which
+    // explore such a path once found, are kept, if there are any; else every estimate may miss
+    // that tail, and the render says so.
+    std::string left_out_before_pilots;
+    std::vector<std::string> warnings;
+    if (scene.effects.specular) {
+        SdsProbeSettings probe;
+        probe.seed = settings.seed;
+        probe.threads = settings.threads;
+        const SdsShare sds = measure_sds_share(scene, settings.light_sampler.get(), probe);
+        if (sds.share > SdsShareLimit) {
+            const std::string why = number(sds.share) +
+                                    " of the image is lit through a specular surface and seen through one, light that only "
+                                    "a camera path hitting the light carries: a tail of rare bright samples no pilot measures";
+            std::vector<const Candidate*> chains;
+            for (const Candidate* c : usable)
+                if (c->integrator->explores_found_paths()) chains.push_back(c);
+            if (!chains.empty() && chains.size() < usable.size()) {
+                for (const Candidate* c : usable)
+                    if (!c->integrator->explores_found_paths())
+                        left_out_before_pilots += (left_out_before_pilots.empty() ? "" : ", ") + c->name;
+                left_out_before_pilots += " left out before the pilots: " + why;
+                usable = chains;
+            } else if (chains.empty()) {
+                warnings.push_back("auto: " + why + "; no candidate here explores the paths it finds (mlt does, from "
+                                   "chapter 05 on), so the pilots' estimates may be far too low");
+            }
+        }
+    }
+    // END BOOK
+
+    // A choice of one needs no pilot: the candidate renders the whole budget.
+    if (usable.size() == 1) {
+        const Candidate& only = *usable.front();
+        RenderSettings whole = settings;
+        if (!only.integrator->draws_from_sampler()) whole.sampler = nullptr;
+        RenderResult result = only.integrator->render(scene, whole, progress);
+        result.seconds = elapsed();
+        result.integrator = only.name;
+        result.integrator_choice = only.name + ": the only candidate" +
+                                   (left_out_before_pilots.empty() ? std::string(" this scene allows") : "; " + left_out_before_pilots);
+        result.notes.insert(result.notes.begin(), "auto chose " + result.integrator_choice + " (no pilots)");
+        result.warnings.insert(result.warnings.end(), warnings.begin(), warnings.end());
+        return result;
+    }
+
     // The pilots: PilotSamples per pixel with each, quietly, their error estimate at every pass.
     std::vector<PilotMeasurement> pilots;
     std::vector<RenderResult> results;
@@ -145,7 +195,8 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
         odd && pilots[*odd].disqualified.empty())
         pilots[*odd].disqualified = "its image disagrees with the other pilots' far more than they disagree among "
                                     "themselves (light it has not found yet)";
-    const IntegratorChoice choice = choose_by_pilots(pilots);
+    IntegratorChoice choice = choose_by_pilots(pilots);
+    if (!left_out_before_pilots.empty()) choice.reason += "; " + left_out_before_pilots;
     const Candidate& chosen = *usable[choice.chosen];
     RenderResult& pilot = results[choice.chosen];
     double pilots_seconds = 0.0;
@@ -193,6 +244,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
     result.integrator = chosen.name;
     result.integrator_choice = choice.reason;
     result.notes.insert(result.notes.begin(), note);
+    result.warnings.insert(result.warnings.end(), warnings.begin(), warnings.end());
     return result;
 }
 

@@ -3,12 +3,14 @@
 
 #include "commands.hpp"
 
+#include "freezeray/auto_integrator.hpp"
 #include "freezeray/chapter_options_cli.hpp"
 #include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/sds_probe.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -62,8 +64,9 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     std::cout << "\n";
     // How pt-nee and pt-mis choose lights here (chapters 03 and 10), built as a render builds it.
     const std::string light_sampler = light_sampler_name("", scene, registry);
+    std::unique_ptr<LightSampler> sampler;
     if (!light_sampler.empty() && !scene.lights.empty()) {
-        const auto sampler = registry.make_light_sampler(light_sampler, scene.lights, scene.file + ": /render/light_sampler");
+        sampler = registry.make_light_sampler(light_sampler, scene.lights, scene.file + ": /render/light_sampler");
         std::cout << "light sampler: " << light_sampler << "\n";
         for (const std::string& line : sampler->description()) std::cout << "  " << line << "\n";
     }
@@ -71,6 +74,16 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
     std::cout << "effects:\n" << scene.effects.describe();
     std::cout << "work per ray ([ ] left out: the scene does not call for it):\n" << describe_work_per_ray(scene);
+    if (scene.camera && !scene.lights.empty() && scene.effects.specular) {
+        const SdsShare sds = measure_sds_share(scene, sampler.get(), SdsProbeSettings{});
+        std::cout << "specular-diffuse-specular: " << std::setprecision(3) << sds.share
+                  << " of the image lit through a specular surface and seen through one (of " << sds.lit_through_specular_view
+                  << " seen through one; standard error " << sds.standard_error << ", " << sds.probes
+                  << " camera rays)";
+        if (registry.has(CapabilityKind::Integrator, "auto"))
+            std::cout << "; auto trusts only Markov chains above " << AutoIntegrator::SdsShareLimit;
+        std::cout << "\n" << std::setprecision(6);
+    }
     // The best suited integrator this renderer has.
     const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry);
     std::cout << "suggested:  " << (suggestion.name.empty() ? "none: " + suggestion.reason

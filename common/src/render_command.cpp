@@ -309,7 +309,14 @@ int run_render(const RenderOptions& options, const Registry& registry) {
             char text[64];
             std::snprintf(text, sizeof text, "estimated relMSE %.4g", result.estimated_relative_mse);
             estimate = text;
-            if (sampler.name != "independent") estimate += " (as if independent: " + sampler.name + "'s is lower)";
+            // auto names the integrator it chose: the sampler reached the image only if that one draws from it.
+            const bool drew_from_sampler =
+                result.integrator.empty()
+                    ? integrator->draws_from_sampler()
+                    : registry.make_integrator(result.integrator, settings, "--integrator", &chapter_options->parameters())
+                          ->draws_from_sampler();
+            if (sampler.name != "independent" && drew_from_sampler)
+                estimate += " (as if independent: " + sampler.name + "'s is lower)";
         }
         std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, %s\n", made_by.integrator.c_str(), result.image.width(),
                      result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),

@@ -100,6 +100,13 @@ public:
     // RenderSettings::light_sampler (chapter 03's pt-nee and pt-mis); the others refuse a named
     // `--light-sampler`.
     virtual bool chooses_lights_per_point() const { return false; }
+
+    // True for a Markov chain over paths (chapter 05): once it has found a rare bright path it
+    // explores the paths near it, so its error does not hang on how seldom such a path is
+    // sampled from scratch. `auto` trusts only these where much of the image rests on
+    // specular-diffuse-specular paths (sds_probe.hpp), which the others sample from scratch with
+    // one strategy only.
+    virtual bool explores_found_paths() const { return false; }
 };
 
 // One sample of the radiance arriving along a camera ray. All randomness from `sampler`, which

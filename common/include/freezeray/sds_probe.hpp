@@ -1,0 +1,51 @@
+// Specular-diffuse-specular (SDS) paths: light that reaches a diffuse or glossy surface through a
+// specular one, seen by the camera through a specular one (the floor under water, seen through
+// the water and lit through it). No connection crosses a specular surface, so of all the
+// strategies of bidirectional path tracing only one can make such a path: the camera subpath
+// that leaves the surface, passes the specular one and happens to hit the light (Veach, "Robust
+// Monte Carlo Methods for Light Transport Simulation", 1997, chapter 10; Kaplanyan and
+// Dachsbacher, "Path Space Regularization for Holistic and Robust Light Transport", 2013). With a
+// small light that strategy's density is tiny and its MIS weight 1: the estimators that sample
+// paths independently (path tracing, bidirectional path tracing) get a heavy tail of rare, very
+// bright samples, which a short pilot render seldom meets and so cannot measure.
+//
+// The probe measures how much of an image rests on such paths, with rays only: it follows camera
+// rays through their specular bounces to the first diffuse or glossy surface and asks, with a few
+// light samples there, how much of the light that would arrive unoccluded is stopped by a
+// specular surface.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace freezeray {
+
+class Scene;
+class LightSampler;
+
+struct SdsShare {
+    double share = 0.0;           // the mean over the probes, in [0, 1]
+    // The share of probes whose camera ray reached a lit diffuse or glossy surface through a
+    // specular bounce or more (those with a value that may be non-zero).
+    double lit_through_specular_view = 0.0;
+    double standard_error = 0.0;  // of `share`, from the probes' spread
+    std::size_t probes = 0;
+};
+
+struct SdsProbeSettings {
+    std::size_t probes = 1u << 16;  // camera rays, at uniformly random film positions
+    int light_samples = 4;          // light samples at each probe's diffuse or glossy surface
+    int max_specular_bounces = 8;   // a camera ray that keeps bouncing specularly longer counts 0
+    std::uint64_t seed = 0;
+    int threads = 0;                // 0: every core
+};
+
+// Each probe's value is 0 unless its camera ray reaches a diffuse or glossy surface after one
+// specular bounce or more; then it is the share of the light samples' unoccluded contribution
+// there (luminance of Li |cos| / pdf) whose shadow ray first meets a surface with specular lobes
+// only, out of the contribution of the samples that are either unoccluded or so blocked (samples
+// an opaque surface blocks carry no light along any path and are left out). Lights are chosen by
+// `lights` when given, else uniformly. The scene must have a camera.
+SdsShare measure_sds_share(const Scene& scene, const LightSampler* lights, const SdsProbeSettings& settings);
+
+}  // namespace freezeray
