@@ -106,12 +106,14 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
     // explore such a path once found, are kept, if there are any; else every estimate may miss
     // that tail, and the render says so.
     std::string left_out_before_pilots;
+    std::string probe_note;  // what the probe measured and took, for the note
     std::vector<std::string> warnings;
     if (scene.effects.specular) {
         SdsProbeSettings probe;
         probe.seed = settings.seed;
         probe.threads = settings.threads;
         const SdsShare sds = measure_sds_share(scene, settings.light_sampler.get(), probe);
+        probe_note = "; SDS probe " + number(sds.share) + " of the image, " + number(elapsed()) + " s";
         if (sds.share > SdsShareLimit) {
             const std::string why = number(sds.share) +
                                     " of the image is lit through a specular surface and seen through one, light that only "
@@ -143,7 +145,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
         result.integrator = only.name;
         result.integrator_choice = only.name + ": the only candidate" +
                                    (left_out_before_pilots.empty() ? std::string(" this scene allows") : "; " + left_out_before_pilots);
-        result.notes.insert(result.notes.begin(), "auto chose " + result.integrator_choice + " (no pilots)");
+        result.notes.insert(result.notes.begin(), "auto chose " + result.integrator_choice + " (no pilots" + probe_note + ")");
         result.warnings.insert(result.warnings.end(), warnings.begin(), warnings.end());
         return result;
     }
@@ -202,7 +204,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
     double pilots_seconds = 0.0;
     for (const PilotMeasurement& m : pilots) pilots_seconds += m.seconds;
     const std::string note = "auto chose " + choice.reason + " (pilots of " + std::to_string(PilotSamples) +
-                             " spp each, " + number(pilots_seconds) + " s in all)";
+                             " spp each, " + number(pilots_seconds) + " s in all" + probe_note + ")";
 
     // The rest of the budget, with the chosen pilot's samples kept.
     RenderSettings rest = settings;

@@ -23,11 +23,20 @@ bool only_specular(const Material& material) {
     return has_flag(flags, BSDF_Specular) && !(flags & (BSDF_Diffuse | BSDF_Glossy));
 }
 
+// A light for `point`: chosen by `lights` when there is one, else uniformly.
+std::optional<LightChoice> choose_light(const Scene& scene, const LightSampler* lights, const ShadingPoint& point,
+                                        float u) {
+    if (lights != nullptr) return lights->sample(point, u);
+    const auto count = static_cast<std::uint32_t>(scene.lights.size());
+    const std::uint32_t index = std::min(count - 1, static_cast<std::uint32_t>(u * static_cast<float>(count)));
+    return LightChoice{scene.lights[index].get(), 1.0f / static_cast<float>(count)};
+}
+
 // One probe: where its camera ray reaches a diffuse or glossy surface through one specular bounce
 // or more, and light arrives there (or would, through specular surfaces), the specularly blocked
 // share of that light; else nothing.
-std::optional<double> probe(const Scene& scene, const LightSampler* lights, const SdsProbeSettings& settings, PCG32& random,
-             ScratchArena& arena) {
+std::optional<double> probe(const Scene& scene, const LightSampler* lights, const SdsProbeSettings& settings,
+                            PCG32& random, ScratchArena& arena) {
     const PinholeCamera& camera = *scene.camera;
     Ray ray = camera.generate_ray({random.next_float() * static_cast<float>(camera.width()),
                                    random.next_float() * static_cast<float>(camera.height())});
@@ -48,18 +57,10 @@ std::optional<double> probe(const Scene& scene, const LightSampler* lights, cons
             for (int i = 0; i < settings.light_samples; ++i) {
                 const float u_select = random.next_float();
                 const Vec2 u_light{random.next_float(), random.next_float()};
-                const Light* light = nullptr;
-                float probability = 0.0f;
-                if (lights != nullptr) {
-                    const std::optional<LightChoice> choice = lights->sample(point, u_select);
-                    if (!choice) continue;
-                    light = choice->light;
-                    probability = choice->probability;
-                } else {
-                    const auto count = static_cast<std::uint32_t>(scene.lights.size());
-                    light = scene.lights[std::min(count - 1, static_cast<std::uint32_t>(u_select * static_cast<float>(count)))].get();
-                    probability = 1.0f / static_cast<float>(count);
-                }
+                const std::optional<LightChoice> choice = choose_light(scene, lights, point, u_select);
+                if (!choice) continue;
+                const Light* light = choice->light;
+                const float probability = choice->probability;
                 const std::optional<LightSample> sample = light->sample_li(hit->position, u_light);
                 if (!sample || sample->pdf <= 0.0f || probability <= 0.0f) continue;
                 const double contribution = luminance(sample->radiance) *
