@@ -74,18 +74,20 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
     std::cout << "effects:\n" << scene.effects.describe();
     std::cout << "work per ray ([ ] left out: the scene does not call for it):\n" << describe_work_per_ray(scene);
+    double sds_share = 0.0;
     if (scene.camera && !scene.lights.empty() && scene.effects.specular) {
         const SdsShare sds = measure_sds_share(scene, sampler.get(), SdsProbeSettings{});
+        sds_share = sds.share;
         std::cout << "specular-diffuse-specular: " << std::setprecision(3) << sds.share
                   << " of the image lit through a specular surface and seen through one (of " << sds.lit_through_specular_view
                   << " seen through one; standard error " << sds.standard_error << ", " << sds.probes
                   << " camera rays)";
         if (registry.has(CapabilityKind::Integrator, "auto"))
-            std::cout << "; auto trusts only Markov chains above " << AutoIntegrator::SdsShareLimit;
+            std::cout << "; auto trusts only Markov chains above " << SdsShareLimit;
         std::cout << "\n" << std::setprecision(6);
     }
     // The best suited integrator this renderer has.
-    const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry);
+    const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry, sds_share);
     std::cout << "suggested:  " << (suggestion.name.empty() ? "none: " + suggestion.reason
                                                              : suggestion.name + " (" + suggestion.reason + ")")
               << "\n";

@@ -8,6 +8,7 @@
 #include "freezeray/progress.hpp"
 #include "freezeray/render_state.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/sds_probe.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -91,7 +92,13 @@ namespace {
 // The integrator for a render that names none: the registered one the scene's effects call for,
 // else the first registered.
 std::string default_integrator(const Scene& scene, const Registry& registry) {
-    const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry);
+    // The probe of specular-diffuse-specular paths (a fraction of a second) only where it can
+    // change the suggestion: a scene with specular surfaces, a camera and lights, and a chain to
+    // suggest.
+    double sds_share = 0.0;
+    if (scene.effects.specular && scene.camera && !scene.lights.empty() && registry.has(CapabilityKind::Integrator, "mlt"))
+        sds_share = measure_sds_share(scene, nullptr, SdsProbeSettings{}).share;
+    const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry, sds_share);
     return !suggestion.name.empty() ? suggestion.name : registry.list(CapabilityKind::Integrator).front().name;
 }
 

@@ -4,6 +4,7 @@
 #include "freezeray/bsdf.hpp"
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/sds_probe.hpp"
 
 #include <set>
 #include <vector>
@@ -64,10 +65,14 @@ std::string describe_work_per_ray(const Scene& scene) {
     return text;
 }
 
-IntegratorSuggestion SceneEffects::suggest_integrator(const Registry& registry) const {
+IntegratorSuggestion SceneEffects::suggest_integrator(const Registry& registry, double sds_share) const {
     if (!area_emitters && !environment && !delta_lights) return {"", "the scene has no light and renders black"};
     // The candidates, best first; the first one the renderer has is the suggestion.
     std::vector<IntegratorSuggestion> candidates;
+    if (sds_share > SdsShareLimit)
+        candidates.push_back({"mlt", "much of the image is lit through a specular surface and seen through one: only a "
+                                     "camera path that hits the light makes those paths, and a Markov chain explores them "
+                                     "once found"});
     if ((specular || transmission) && (area_emitters || delta_lights))
         candidates.push_back({"bdpt", "caustics through specular surfaces are found from the light side"});
     candidates.push_back({"pt-mis", "light and BSDF sampling combined"});

@@ -2,6 +2,10 @@
 // shares on scenes built so that the answer is known (tests/data/sds/), the limit's margin on the
 // book's scenes, and auto's choice where the share is above it.
 #include "freezeray/auto_integrator.hpp"
+#include "freezeray/ch01/register_chapter01.hpp"
+#include "freezeray/ch02/register_chapter02.hpp"
+#include "freezeray/ch03/register_chapter03.hpp"
+#include "freezeray/ch04/register_chapter04.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
@@ -66,7 +70,7 @@ TEST_CASE("the SDS limit lies far from every scene of the book: above it water-c
     for (const char* file : {"caustic/scene.json", "material-spheres/scene.json", "cornell-box/scene.json",
                              "veach-mis/scene.json", "cornell-lamp/scene.json", "door-ajar/scene.json"}) {
         INFO(file);
-        CHECK(probe_scene(testing::scene_path(file)).share < AutoIntegrator::SdsShareLimit / 2.0);
+        CHECK(probe_scene(testing::scene_path(file)).share < SdsShareLimit / 2.0);
     }
     const std::optional<std::string> shared = testing::shared_scenes_folder();
     if (!shared || !std::filesystem::exists(*shared + "/water-caustic/water-caustic.obj")) {
@@ -75,9 +79,9 @@ TEST_CASE("the SDS limit lies far from every scene of the book: above it water-c
     }
     for (const char* file : {"staircase2/scene.json", "veach-bidir/scene.json", "material-testball/scene.json"}) {
         INFO(file);
-        CHECK(probe_scene(testing::scene_path(file)).share < AutoIntegrator::SdsShareLimit / 2.0);
+        CHECK(probe_scene(testing::scene_path(file)).share < SdsShareLimit / 2.0);
     }
-    CHECK(probe_scene(testing::scene_path("water-caustic/scene.json")).share > 10.0 * AutoIntegrator::SdsShareLimit);
+    CHECK(probe_scene(testing::scene_path("water-caustic/scene.json")).share > 10.0 * SdsShareLimit);
 }
 
 TEST_CASE("auto renders a scene lit by SDS paths with the Markov chain, without pilots, and says why", "[unit][auto]") {
@@ -97,4 +101,19 @@ TEST_CASE("auto renders a scene lit by SDS paths with the Markov chain, without 
     const RenderResult mlt = registry.make_integrator("mlt", settings, "test")->render(scene, settings, quiet);
     CHECK(result.samples_per_pixel == mlt.samples_per_pixel);
     CHECK(result.image.pixels() == mlt.image.pixels());
+}
+
+TEST_CASE("the suggestion is mlt above the SDS limit when the renderer has it, the effects' guess elsewhere", "[unit][auto]") {
+    const Scene scene = load_scene(testing::test_data_path("sds/through.json"), testing::full_registry());
+    // Smooth transmission and an area light: the effects alone suggest bdpt (caustics).
+    CHECK(scene.effects.suggest_integrator(testing::full_registry()).name == "bdpt");
+    CHECK(scene.effects.suggest_integrator(testing::full_registry(), SdsShareLimit / 2.0).name == "bdpt");
+    CHECK(scene.effects.suggest_integrator(testing::full_registry(), 1.0).name == "mlt");
+    // Before chapter 05 there is no chain to suggest.
+    Registry chapter04("ch04", 4);
+    register_chapter01(chapter04);
+    register_chapter02(chapter04);
+    register_chapter03(chapter04);
+    register_chapter04(chapter04);
+    CHECK(scene.effects.suggest_integrator(chapter04, 1.0).name == "bdpt");
 }

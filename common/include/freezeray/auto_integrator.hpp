@@ -40,11 +40,6 @@ class AutoIntegrator final : public Integrator {
 public:
     static constexpr std::uint64_t PilotSamples = 4;      // per pixel: estimates at 2 and 4 to compare
     static constexpr double RisingTolerance = 1.0;        // the estimate at 4 spp must fall below this x that at 2
-    // Above this share of the image lit by specular-diffuse-specular paths (sds_probe.hpp), only
-    // the candidates that explore the paths they find are trusted. One pixel in twenty: the
-    // book's scenes measure 0.007 or less, or 0.64 (water-caustic), so any limit from 0.01 to
-    // 0.6 makes the same choices (book chapter 11, "Paths no pilot measures").
-    static constexpr double SdsShareLimit = 0.05;
 
     struct Candidate {
         std::string name;

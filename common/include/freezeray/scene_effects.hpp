@@ -28,8 +28,11 @@ struct SceneEffects {
     // A human-readable list, one effect per line, for `info`.
     std::string describe() const;
 
-    // The best-suited integrator among those `registry` has.
-    IntegratorSuggestion suggest_integrator(const Registry& registry) const;
+    // The best-suited integrator among those `registry` has. `sds_share` is the share of the
+    // image lit by specular-diffuse-specular paths (sds_probe.hpp), which the effects alone
+    // cannot tell: above SdsShareLimit the suggestion is `mlt`, the chain that explores the
+    // paths it finds, when the registry has it.
+    IntegratorSuggestion suggest_integrator(const Registry& registry, double sds_share = 0.0) const;
 };
 
 // The work a render does per ray that depends on what the scene contains, one line each, for

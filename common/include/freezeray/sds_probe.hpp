@@ -23,6 +23,13 @@ namespace freezeray {
 class Scene;
 class LightSampler;
 
+// Above this share of the image lit by SDS paths, only integrators that explore the paths they
+// find (the Metropolis chains of chapter 05) are trusted: `auto` pilots only those, and the
+// suggestion of `info` and the default integrator of `render` is one of them. One pixel in
+// twenty: the book's scenes measure 0.007 or less, or 0.64 (water-caustic), so any limit from
+// 0.01 to 0.6 makes the same choices (book chapter 11, "Paths no pilot measures").
+constexpr double SdsShareLimit = 0.05;
+
 struct SdsShare {
     double share = 0.0;           // the mean over the probes, in [0, 1]
     // The share of probes whose camera ray reached a lit diffuse or glossy surface through a
