@@ -100,8 +100,9 @@ TEST_CASE("auto chooses on the book's scenes what their equal-time comparisons m
     const std::string lamp = choose("cornell-lamp/scene.json");  // pt-mis: its estimate rises
     CHECK((lamp == "bdpt" || lamp == "mlt"));
     CHECK(choose("caustic/scene.json") == "bdpt");  // pt-mis: it disagrees with both chains' images
-    const std::string door = choose("door-ajar/scene.json");
-    CHECK((door == "mlt" || door == "bdpt"));
+    // door-ajar: pt-mis's and bdpt's estimates both rise from 2 to 4 samples per pixel (a rule
+    // that reads images only), so mlt is the only candidate left, whatever the pilots' times.
+    CHECK(choose("door-ajar/scene.json") == "mlt");
     CHECK(registry.has(CapabilityKind::Integrator, "auto"));
 }
 
