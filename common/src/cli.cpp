@@ -76,7 +76,9 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     std::cout << "work per ray ([ ] left out: the scene does not call for it):\n" << describe_work_per_ray(scene);
     double sds_share = 0.0;
     if (scene.camera && !scene.lights.empty() && scene.effects.specular) {
-        const SdsShare sds = measure_sds_share(scene, sampler.get(), SdsProbeSettings{});
+        SdsProbeSettings probe;
+        probe.camera_strategy_tries = 1u << 20;
+        const SdsShare sds = measure_sds_share(scene, sampler.get(), probe);
         sds_share = sds.share;
         std::cout << "specular-diffuse-specular: " << std::setprecision(3) << sds.share
                   << " of the image lit through a specular surface and seen through one (of " << sds.lit_through_specular_view
@@ -84,7 +86,20 @@ int run_info(const std::string& scene_path, const Registry& registry) {
                   << " camera rays)";
         if (registry.has(CapabilityKind::Integrator, "auto"))
             std::cout << "; auto trusts only Markov chains above " << SdsShareLimit;
-        std::cout << "\n" << std::setprecision(6);
+        std::cout << "\n";
+        if (sds.camera_strategy_tries > 0) {
+            // How heavy the tail is: the one strategy's chance p there, and share / p.
+            const CameraStrategyChance chance = camera_strategy_chance(sds);
+            std::cout << "  from there, a camera path reaches a light in " << sds.camera_strategy_hits << " of "
+                      << sds.camera_strategy_tries << " tries (p " << chance.p << ", 95 % upper bound " << chance.p_upper
+                      << "): these paths add ";
+            if (sds.camera_strategy_hits > 0)
+                std::cout << "about " << chance.tail_per_sample << " (at least " << chance.tail_lower << ")";
+            else
+                std::cout << "more than " << chance.tail_lower;
+            std::cout << " to the expected relMSE at 1 sample per pixel\n";
+        }
+        std::cout << std::setprecision(6);
     }
     // The best suited integrator this renderer has.
     const IntegratorSuggestion suggestion = scene.effects.suggest_integrator(registry, sds_share);

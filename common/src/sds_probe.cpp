@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -32,11 +33,41 @@ std::optional<LightChoice> choose_light(const Scene& scene, const LightSampler* 
     return LightChoice{scene.lights[index].get(), 1.0f / static_cast<float>(count)};
 }
 
+// Whether a direction sampled from the BSDF at `hit`, followed through specular bounces, reaches
+// an emitter: one try of the only strategy that makes an SDS path (a camera path hitting the light).
+bool camera_strategy_hits(const Scene& scene, const Hit& hit, const BSDF& bsdf, const Frame& frame, const Vec3& wo,
+                          const SdsProbeSettings& settings, PCG32& random, ScratchArena& arena) {
+    arena.reset();  // its own arena: the surface's BSDF lives in the probe's
+    const std::optional<BSDFSample> first = bsdf.sample(wo, {random.next_float(), random.next_float()}, random.next_float());
+    if (!first || first->pdf <= 0.0f) return false;
+    Ray ray = hit.spawn_ray(frame.to_world(first->wi));
+    for (int bounce = 0; bounce <= settings.max_specular_bounces; ++bounce) {
+        const std::optional<Hit> next = scene.intersect(ray);
+        if (!next) return false;
+        const Material& material = scene.material(*next);
+        if (!is_black(emitted_radiance(material, *next, -ray.direction))) return true;
+        if (!only_specular(material)) return false;
+        const BSDF& specular = *material.bsdf(*next, arena);
+        const Frame next_frame = shading_frame(*next, specular, -ray.direction);
+        const std::optional<BSDFSample> sample = specular.sample(next_frame.to_local(-ray.direction),
+                                                                 {random.next_float(), random.next_float()}, random.next_float());
+        if (!sample || sample->pdf <= 0.0f) return false;
+        ray = next->spawn_ray(next_frame.to_world(sample->wi));
+    }
+    return false;
+}
+
+struct ProbeResult {
+    std::optional<double> value;  // see probe()
+    bool lit_through_specular = false;  // the value is above 0: some light arrives through a specular surface
+    std::uint64_t tries = 0, hits = 0;
+};
+
 // One probe: where its camera ray reaches a diffuse or glossy surface through one specular bounce
 // or more, and light arrives there (or would, through specular surfaces), the specularly blocked
-// share of that light; else nothing.
-std::optional<double> probe(const Scene& scene, const LightSampler* lights, const SdsProbeSettings& settings,
-                            PCG32& random, ScratchArena& arena) {
+// share of that light; else nothing. Where that share is not 0, the camera strategy's tries.
+ProbeResult probe(const Scene& scene, const LightSampler* lights, const SdsProbeSettings& settings,
+                  std::uint64_t tries, PCG32& random, ScratchArena& arena, ScratchArena& tries_arena) {
     const PinholeCamera& camera = *scene.camera;
     Ray ray = camera.generate_ray({random.next_float() * static_cast<float>(camera.width()),
                                    random.next_float() * static_cast<float>(camera.height())});
@@ -44,14 +75,14 @@ std::optional<double> probe(const Scene& scene, const LightSampler* lights, cons
     for (;;) {
         arena.reset();
         const std::optional<Hit> hit = scene.intersect(ray);
-        if (!hit) return std::nullopt;
+        if (!hit) return {};
         const Material& material = scene.material(*hit);
         const BSDF& bsdf = *material.bsdf(*hit, arena);
         const Vec3 wo_world = -ray.direction;
         const Frame frame = shading_frame(*hit, bsdf, wo_world);
         const Vec3 wo = frame.to_local(wo_world);
         if (bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy)) {
-            if (specular_bounces == 0) return std::nullopt;  // seen directly: connections reach it from the camera
+            if (specular_bounces == 0) return {};  // seen directly: connections reach it from the camera
             const ShadingPoint point = shading_point(*hit, frame, wo, bsdf);
             double blocked = 0.0, arriving = 0.0;
             for (int i = 0; i < settings.light_samples; ++i) {
@@ -75,14 +106,18 @@ std::optional<double> probe(const Scene& scene, const LightSampler* lights, cons
                     blocked += contribution;
                 }
             }
-            if (arriving > 0.0) return blocked / arriving;
-            return std::nullopt;
+            if (!(arriving > 0.0)) return {};
+            ProbeResult result{blocked / arriving, blocked > 0.0};
+            if (result.lit_through_specular)
+                for (; result.tries < tries; ++result.tries)
+                    result.hits += camera_strategy_hits(scene, *hit, bsdf, frame, wo, settings, random, tries_arena) ? 1 : 0;
+            return result;
         }
         // Only delta lobes: follow one, as every path through here must.
-        if (++specular_bounces > settings.max_specular_bounces) return std::nullopt;
+        if (++specular_bounces > settings.max_specular_bounces) return {};
         const std::optional<BSDFSample> sample =
             bsdf.sample(wo, {random.next_float(), random.next_float()}, random.next_float());
-        if (!sample || sample->pdf <= 0.0f) return std::nullopt;
+        if (!sample || sample->pdf <= 0.0f) return {};
         ray = hit->spawn_ray(frame.to_world(sample->wi));
     }
 }
@@ -95,19 +130,35 @@ SdsShare measure_sds_share(const Scene& scene, const LightSampler* lights, const
     result.probes = settings.probes;
     if (settings.probes == 0 || scene.lights.empty()) return result;
     const int threads = resolve_thread_count(settings.threads);
-    std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads));
-    std::vector<std::optional<double>> values(settings.probes);
+    std::vector<ScratchArena> arenas(static_cast<std::size_t>(threads)), tries_arenas(static_cast<std::size_t>(threads));
+    std::vector<ProbeResult> values(settings.probes);
     parallel_for(settings.probes, threads, [&](std::size_t i, int thread) {
         PCG32 random(settings.seed, i);  // each probe its own stream: the same result on any number of threads
-        values[i] = probe(scene, lights, settings, random, arenas[static_cast<std::size_t>(thread)]);
+        values[i] = probe(scene, lights, settings, 0, random, arenas[static_cast<std::size_t>(thread)],
+                          tries_arenas[static_cast<std::size_t>(thread)]);
     });
+    // The camera strategy's tries, spread evenly over the surfaces lit through a specular one:
+    // each such probe runs again from its own stream (the same camera ray, the same surface).
+    std::vector<std::size_t> lit;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (values[i].lit_through_specular) lit.push_back(i);
+    if (settings.camera_strategy_tries > 0 && !lit.empty()) {
+        const std::uint64_t tries = (settings.camera_strategy_tries + lit.size() - 1) / lit.size();
+        parallel_for(lit.size(), threads, [&](std::size_t k, int thread) {
+            PCG32 random(settings.seed, lit[k]);
+            values[lit[k]] = probe(scene, lights, settings, tries, random, arenas[static_cast<std::size_t>(thread)],
+                                   tries_arenas[static_cast<std::size_t>(thread)]);
+        });
+    }
     double sum = 0.0, sum_squares = 0.0;
     std::size_t through = 0;
-    for (const std::optional<double>& v : values) {
-        if (!v) continue;
+    for (const ProbeResult& r : values) {
+        result.camera_strategy_tries += r.tries;
+        result.camera_strategy_hits += r.hits;
+        if (!r.value) continue;
         ++through;
-        sum += *v;
-        sum_squares += *v * *v;
+        sum += *r.value;
+        sum_squares += *r.value * *r.value;
     }
     const auto n = static_cast<double>(settings.probes);
     result.share = sum / n;
@@ -115,6 +166,24 @@ SdsShare measure_sds_share(const Scene& scene, const LightSampler* lights, const
     const double variance = n > 1.0 ? std::max(0.0, (sum_squares - sum * sum / n) / (n - 1.0)) : 0.0;
     result.standard_error = std::sqrt(variance / n);
     return result;
+}
+
+CameraStrategyChance camera_strategy_chance(const SdsShare& sds) {
+    CameraStrategyChance chance;
+    if (sds.camera_strategy_tries == 0) return chance;
+    const auto tries = static_cast<double>(sds.camera_strategy_tries);
+    const std::uint64_t hits = sds.camera_strategy_hits;
+    // 95 % one-sided upper limits of a Poisson mean after 0..9 events, and beyond them the
+    // approximation n + S sqrt(n + 1) + (S^2 + 2) / 3 with S = 1.645 (Gehrels, "Confidence Limits
+    // for Small Numbers of Events in Astrophysical Data", 1986, table 1 and equation 9).
+    constexpr double PoissonUpper[] = {3.000, 4.744, 6.296, 7.754, 9.154, 10.51, 11.84, 13.15, 14.43, 15.71};
+    const auto n = static_cast<double>(hits);
+    const double upper_hits = hits < 10 ? PoissonUpper[hits] : n + 1.645 * std::sqrt(n + 1.0) + (1.645 * 1.645 + 2.0) / 3.0;
+    chance.p = n / tries;
+    chance.p_upper = std::min(1.0, upper_hits / tries);
+    chance.tail_per_sample = hits > 0 ? sds.share / chance.p : std::numeric_limits<double>::infinity();
+    chance.tail_lower = sds.share / chance.p_upper;
+    return chance;
 }
 
 }  // namespace freezeray

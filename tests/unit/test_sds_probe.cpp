@@ -15,7 +15,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 
 using namespace freezeray;
 
@@ -116,4 +118,45 @@ TEST_CASE("the suggestion is mlt above the SDS limit when the renderer has it, t
     register_chapter03(chapter04);
     register_chapter04(chapter04);
     CHECK(scene.effects.suggest_integrator(chapter04, 1.0).name == "bdpt");
+}
+
+TEST_CASE("the camera strategy's chance is the light's configuration factor where it is known exactly", "[unit][auto]") {
+    // through-narrow.json: every probe sees the floor within 0.03 of the point under the 1 x 1
+    // light at height 2, through a plane of index 1 that bends nothing. A cosine-distributed
+    // direction from there reaches the light with the configuration factor of a parallel square
+    // above its centre: four rectangles with a corner above the point (Howell's catalogue).
+    const double a = 0.5 / 2.0;  // the rectangles' sides over the height
+    const double corner = (a / std::sqrt(1.0 + a * a) * std::atan(a / std::sqrt(1.0 + a * a))) * 2.0 / (2.0 * std::numbers::pi);
+    const double expected = 4.0 * corner;  // 0.0735
+    const Scene scene = load_scene(testing::test_data_path("sds/through-narrow.json"), testing::full_registry());
+    SdsProbeSettings settings;
+    settings.probes = 1u << 12;
+    settings.camera_strategy_tries = 1u << 18;
+    settings.seed = 4;
+    const SdsShare sds = measure_sds_share(scene, nullptr, settings);
+    REQUIRE(sds.share == 1.0);
+    REQUIRE(sds.camera_strategy_tries >= settings.camera_strategy_tries);
+    const CameraStrategyChance chance = camera_strategy_chance(sds);
+    // Binomial: 4 standard errors (about 0.0021), a false failure about once in 16,000 seeds.
+    const double standard_error = std::sqrt(expected * (1.0 - expected) / double(sds.camera_strategy_tries));
+    CHECK(std::abs(chance.p - expected) < 4.0 * standard_error);
+    CHECK(chance.p_upper > chance.p);
+    CHECK(chance.tail_per_sample == Approx(1.0 / chance.p));
+}
+
+TEST_CASE("with no hit, the camera strategy's chance is bounded by the Poisson limit of 3 events", "[unit][auto]") {
+    SdsShare sds;
+    sds.share = 0.5;
+    sds.camera_strategy_tries = 1000;
+    sds.camera_strategy_hits = 0;
+    const CameraStrategyChance none = camera_strategy_chance(sds);
+    CHECK(none.p == 0.0);
+    CHECK(none.p_upper == Approx(0.003));
+    CHECK(std::isinf(none.tail_per_sample));
+    CHECK(none.tail_lower == Approx(0.5 / 0.003));
+    // Many hits: the bound n + 1.645 sqrt(n + 1) + 1.569 (Gehrels 1986, equation 9).
+    sds.camera_strategy_hits = 100;
+    const CameraStrategyChance many = camera_strategy_chance(sds);
+    CHECK(many.p == Approx(0.1));
+    CHECK(many.p_upper == Approx((100.0 + 1.645 * std::sqrt(101.0) + (1.645 * 1.645 + 2.0) / 3.0) / 1000.0));
 }

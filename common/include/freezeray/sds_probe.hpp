@@ -12,7 +12,9 @@
 // The probe measures how much of an image rests on such paths, with rays only: it follows camera
 // rays through their specular bounces to the first diffuse or glossy surface and asks, with a few
 // light samples there, how much of the light that would arrive unoccluded is stopped by a
-// specular surface.
+// specular surface. On request it also measures how heavy the tail is: how often the one
+// strategy, a direction sampled from the BSDF there and followed through specular bounces,
+// reaches an emitter (camera_strategy_chance).
 #pragma once
 
 #include <cstddef>
@@ -37,12 +39,34 @@ struct SdsShare {
     double lit_through_specular_view = 0.0;
     double standard_error = 0.0;  // of `share`, from the probes' spread
     std::size_t probes = 0;
+    // How the one strategy finds those paths (when SdsProbeSettings::camera_strategy_tries > 0):
+    // of `camera_strategy_tries` directions sampled from the BSDF at the surfaces lit through a
+    // specular one, followed through specular bounces, `camera_strategy_hits` reached an emitter.
+    std::uint64_t camera_strategy_tries = 0;
+    std::uint64_t camera_strategy_hits = 0;
 };
+
+// The chance p that the camera strategy finds the light from a surface lit through a specular
+// one, with a 95 % upper bound (the Poisson bound on the hits, for few of them); and the tail it
+// leaves: where a pixel's light comes only from hits of chance p, each worth 1/p of the pixel's
+// value, the relative variance of one sample is 1/p - 1. Over the image, about share / p: the
+// relMSE these paths alone add at one sample per pixel, in expectation (a heavy tail's typical
+// run lies below it).
+struct CameraStrategyChance {
+    double p = 0.0;            // hits / tries
+    double p_upper = 0.0;      // 95 % upper bound
+    double tail_per_sample = 0.0;  // share / p; infinite when no try hit
+    double tail_lower = 0.0;   // share / p_upper
+};
+CameraStrategyChance camera_strategy_chance(const SdsShare& sds);
 
 struct SdsProbeSettings {
     std::size_t probes = 1u << 16;  // camera rays, at uniformly random film positions
     int light_samples = 4;          // light samples at each probe's diffuse or glossy surface
     int max_specular_bounces = 8;   // a camera ray that keeps bouncing specularly longer counts 0
+    // Tries of the camera strategy in all, spread evenly over the probes' surfaces lit through a
+    // specular one (0: not measured).
+    std::uint64_t camera_strategy_tries = 0;
     std::uint64_t seed = 0;
     int threads = 0;                // 0: every core
 };
