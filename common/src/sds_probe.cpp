@@ -33,8 +33,9 @@ std::optional<LightChoice> choose_light(const Scene& scene, const LightSampler* 
     return LightChoice{scene.lights[index].get(), 1.0f / static_cast<float>(count)};
 }
 
-// Whether a direction sampled from the BSDF at `hit`, followed through specular bounces, reaches
-// an emitter: one try of the only strategy that makes an SDS path (a camera path hitting the light).
+// Whether a direction sampled from the BSDF at `hit`, followed through one specular bounce or
+// more, reaches an emitter: one try of the only strategy that makes an SDS path (a camera path
+// hitting the light through a specular surface; an emitter seen directly is light sampling's).
 bool camera_strategy_hits(const Scene& scene, const Hit& hit, const BSDF& bsdf, const Frame& frame, const Vec3& wo,
                           const SdsProbeSettings& settings, PCG32& random, ScratchArena& arena) {
     arena.reset();  // its own arena: the surface's BSDF lives in the probe's
@@ -45,7 +46,7 @@ bool camera_strategy_hits(const Scene& scene, const Hit& hit, const BSDF& bsdf, 
         const std::optional<Hit> next = scene.intersect(ray);
         if (!next) return false;
         const Material& material = scene.material(*next);
-        if (!is_black(emitted_radiance(material, *next, -ray.direction))) return true;
+        if (!is_black(emitted_radiance(material, *next, -ray.direction))) return bounce > 0;
         if (!only_specular(material)) return false;
         const BSDF& specular = *material.bsdf(*next, arena);
         const Frame next_frame = shading_frame(*next, specular, -ray.direction);
