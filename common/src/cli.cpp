@@ -3,7 +3,6 @@
 
 #include "commands.hpp"
 
-#include "freezeray/auto_integrator.hpp"
 #include "freezeray/chapter_options_cli.hpp"
 #include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"

@@ -33,6 +33,36 @@ std::optional<LightChoice> choose_light(const Scene& scene, const LightSampler* 
     return LightChoice{scene.lights[index].get(), 1.0f / static_cast<float>(count)};
 }
 
+// Where `ray` ends after the surfaces with delta lobes only, each passed by sampling its BSDF, as
+// every path through them must: the first surface with a diffuse or glossy lobe (or, with
+// `stop_at_emitters`, the first emitter, whatever its lobes), with the ray that reached it and
+// the number of specular bounces before it; no hit when the ray leaves the scene, a sample fails,
+// or it bounces more than max_specular_bounces times. The end surface's BSDF is in `arena`.
+struct SpecularChainEnd {
+    std::optional<Hit> hit;
+    Ray ray;  // the ray that found `hit`
+    const BSDF* bsdf = nullptr;
+    int specular_bounces = 0;
+};
+SpecularChainEnd follow_specular_chain(const Scene& scene, Ray ray, bool stop_at_emitters, const SdsProbeSettings& settings,
+                                       PCG32& random, ScratchArena& arena) {
+    for (int bounces = 0;; ++bounces) {
+        const std::optional<Hit> hit = scene.intersect(ray);
+        if (!hit) return {};
+        const Material& material = scene.material(*hit);
+        const BSDF& bsdf = *material.bsdf(*hit, arena);
+        if ((bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy)) ||
+            (stop_at_emitters && !is_black(emitted_radiance(material, *hit, -ray.direction))))
+            return {hit, ray, &bsdf, bounces};
+        if (bounces == settings.max_specular_bounces) return {};
+        const Frame frame = shading_frame(*hit, bsdf, -ray.direction);
+        const std::optional<BSDFSample> sample =
+            bsdf.sample(frame.to_local(-ray.direction), {random.next_float(), random.next_float()}, random.next_float());
+        if (!sample || sample->pdf <= 0.0f) return {};
+        ray = hit->spawn_ray(frame.to_world(sample->wi));
+    }
+}
+
 // Whether a direction sampled from the BSDF at `hit`, followed through one specular bounce or
 // more, reaches an emitter: one try of the only strategy that makes an SDS path (a camera path
 // hitting the light through a specular surface; an emitter seen directly is light sampling's).
@@ -41,21 +71,10 @@ bool camera_strategy_hits(const Scene& scene, const Hit& hit, const BSDF& bsdf, 
     arena.reset();  // its own arena: the surface's BSDF lives in the probe's
     const std::optional<BSDFSample> first = bsdf.sample(wo, {random.next_float(), random.next_float()}, random.next_float());
     if (!first || first->pdf <= 0.0f) return false;
-    Ray ray = hit.spawn_ray(frame.to_world(first->wi));
-    for (int bounce = 0; bounce <= settings.max_specular_bounces; ++bounce) {
-        const std::optional<Hit> next = scene.intersect(ray);
-        if (!next) return false;
-        const Material& material = scene.material(*next);
-        if (!is_black(emitted_radiance(material, *next, -ray.direction))) return bounce > 0;
-        if (!only_specular(material)) return false;
-        const BSDF& specular = *material.bsdf(*next, arena);
-        const Frame next_frame = shading_frame(*next, specular, -ray.direction);
-        const std::optional<BSDFSample> sample = specular.sample(next_frame.to_local(-ray.direction),
-                                                                 {random.next_float(), random.next_float()}, random.next_float());
-        if (!sample || sample->pdf <= 0.0f) return false;
-        ray = next->spawn_ray(next_frame.to_world(sample->wi));
-    }
-    return false;
+    const SpecularChainEnd end =
+        follow_specular_chain(scene, hit.spawn_ray(frame.to_world(first->wi)), true, settings, random, arena);
+    return end.hit && end.specular_bounces > 0 &&
+           !is_black(emitted_radiance(scene.material(*end.hit), *end.hit, -end.ray.direction));
 }
 
 struct ProbeResult {
@@ -70,57 +89,46 @@ struct ProbeResult {
 ProbeResult probe(const Scene& scene, const LightSampler* lights, const SdsProbeSettings& settings,
                   std::uint64_t tries, PCG32& random, ScratchArena& arena, ScratchArena& tries_arena) {
     const PinholeCamera& camera = *scene.camera;
-    Ray ray = camera.generate_ray({random.next_float() * static_cast<float>(camera.width()),
-                                   random.next_float() * static_cast<float>(camera.height())});
-    int specular_bounces = 0;
-    for (;;) {
-        arena.reset();
-        const std::optional<Hit> hit = scene.intersect(ray);
-        if (!hit) return {};
-        const Material& material = scene.material(*hit);
-        const BSDF& bsdf = *material.bsdf(*hit, arena);
-        const Vec3 wo_world = -ray.direction;
-        const Frame frame = shading_frame(*hit, bsdf, wo_world);
-        const Vec3 wo = frame.to_local(wo_world);
-        if (bsdf.flags() & (BSDF_Diffuse | BSDF_Glossy)) {
-            if (specular_bounces == 0) return {};  // seen directly: connections reach it from the camera
-            const ShadingPoint point = shading_point(*hit, frame, wo, bsdf);
-            double blocked = 0.0, arriving = 0.0;
-            for (int i = 0; i < settings.light_samples; ++i) {
-                const float u_select = random.next_float();
-                const Vec2 u_light{random.next_float(), random.next_float()};
-                const std::optional<LightChoice> choice = choose_light(scene, lights, point, u_select);
-                if (!choice) continue;
-                const Light* light = choice->light;
-                const float probability = choice->probability;
-                const std::optional<LightSample> sample = light->sample_li(hit->position, u_light);
-                if (!sample || sample->pdf <= 0.0f || probability <= 0.0f) continue;
-                const double contribution = luminance(sample->radiance) *
-                                            std::abs(glm::dot(hit->shading_normal, sample->wi)) / (probability * sample->pdf);
-                if (!(contribution > 0.0) || !std::isfinite(contribution)) continue;
-                const Ray shadow = sample->infinite ? hit->spawn_ray(sample->wi) : hit->spawn_ray_to(sample->position);
-                const std::optional<Hit> blocker = scene.intersect(shadow);
-                if (!blocker) {
-                    arriving += contribution;
-                } else if (only_specular(scene.material(*blocker))) {
-                    arriving += contribution;
-                    blocked += contribution;
-                }
-            }
-            if (!(arriving > 0.0)) return {};
-            ProbeResult result{blocked / arriving, blocked > 0.0};
-            if (result.lit_through_specular)
-                for (; result.tries < tries; ++result.tries)
-                    result.hits += camera_strategy_hits(scene, *hit, bsdf, frame, wo, settings, random, tries_arena) ? 1 : 0;
-            return result;
+    const Ray camera_ray = camera.generate_ray({random.next_float() * static_cast<float>(camera.width()),
+                                                random.next_float() * static_cast<float>(camera.height())});
+    arena.reset();
+    const SpecularChainEnd end = follow_specular_chain(scene, camera_ray, false, settings, random, arena);
+    // Seen directly, connections reach it from the camera.
+    if (!end.hit || end.specular_bounces == 0) return {};
+    const Hit& hit = *end.hit;
+    const BSDF& bsdf = *end.bsdf;
+    const Vec3 wo_world = -end.ray.direction;
+    const Frame frame = shading_frame(hit, bsdf, wo_world);
+    const Vec3 wo = frame.to_local(wo_world);
+    const ShadingPoint point = shading_point(hit, frame, wo, bsdf);
+    double blocked = 0.0, arriving = 0.0;
+    for (int i = 0; i < settings.light_samples; ++i) {
+        const float u_select = random.next_float();
+        const Vec2 u_light{random.next_float(), random.next_float()};
+        const std::optional<LightChoice> choice = choose_light(scene, lights, point, u_select);
+        if (!choice) continue;
+        const Light* light = choice->light;
+        const float probability = choice->probability;
+        const std::optional<LightSample> sample = light->sample_li(hit.position, u_light);
+        if (!sample || sample->pdf <= 0.0f || probability <= 0.0f) continue;
+        const double contribution = luminance(sample->radiance) *
+                                    std::abs(glm::dot(hit.shading_normal, sample->wi)) / (probability * sample->pdf);
+        if (!(contribution > 0.0) || !std::isfinite(contribution)) continue;
+        const Ray shadow = sample->infinite ? hit.spawn_ray(sample->wi) : hit.spawn_ray_to(sample->position);
+        const std::optional<Hit> blocker = scene.intersect(shadow);
+        if (!blocker) {
+            arriving += contribution;
+        } else if (only_specular(scene.material(*blocker))) {
+            arriving += contribution;
+            blocked += contribution;
         }
-        // Only delta lobes: follow one, as every path through here must.
-        if (++specular_bounces > settings.max_specular_bounces) return {};
-        const std::optional<BSDFSample> sample =
-            bsdf.sample(wo, {random.next_float(), random.next_float()}, random.next_float());
-        if (!sample || sample->pdf <= 0.0f) return {};
-        ray = hit->spawn_ray(frame.to_world(sample->wi));
     }
+    if (!(arriving > 0.0)) return {};
+    ProbeResult result{blocked / arriving, blocked > 0.0};
+    if (result.lit_through_specular)
+        for (; result.tries < tries; ++result.tries)
+            result.hits += camera_strategy_hits(scene, hit, bsdf, frame, wo, settings, random, tries_arena) ? 1 : 0;
+    return result;
 }
 
 }  // namespace
