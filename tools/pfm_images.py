@@ -1,5 +1,5 @@
 """Colour PFM images as the project's Python tools read and compare them: the pixels as one flat
-list of floats, and FreezeRay's error metric (common/src/metrics.cpp)."""
+list of floats, and FreezeRay's error metric (common/core/src/metrics.cpp)."""
 import struct
 import sys
 

@@ -1,6 +1,7 @@
 // The error a render estimates from its own per-pixel variance, against the true error measured
 // with a reference.
 #include "freezeray/metrics.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/progress.hpp"
 
 #include "test_scenes.hpp"

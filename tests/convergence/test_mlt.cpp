@@ -5,6 +5,7 @@
 // convergence, tests/STATISTICS.md): 2 + 2 + 1 blockwise Welch tests of mlt, 3 of multiplexed mlt, and
 // 1 Welch test.
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/ch05/metropolis_light_transport.hpp"
 
 #include "independent_runs.hpp"

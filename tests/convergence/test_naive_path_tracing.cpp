@@ -1,5 +1,6 @@
 // pt-naive converges to the right answer, at the right rate, reproducibly.
 #include "freezeray/comparison.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/metrics.hpp"
 #include "freezeray/progress.hpp"
 

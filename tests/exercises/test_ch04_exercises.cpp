@@ -2,6 +2,7 @@
 // exercise's own function first (so that in a student copy it fails through its own stub), and
 // checks it against exact values. Deterministic: no statistical test in this file.
 #include "freezeray/ch01/lambertian.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/ch04/bdpt_mis_weight.hpp"
 #include "freezeray/ch04/light_tracer.hpp"
 

@@ -15,6 +15,7 @@
 #include "freezeray/image.hpp"
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include <cmath>
 #include <cstddef>

@@ -61,7 +61,7 @@ TEST_CASE = re.compile(r'TEST_CASE\s*\(\s*"(?P<name>[^"]*)"')
 # A chapter folder is chapters/NN-name; its regions belong to chapter NN.
 CHAPTER_FOLDER = re.compile(r"^chapters/(?P<number>\d{2})-[^/]+/")
 
-# The message ExerciseNotImplemented carries (common/include/freezeray/error.hpp).
+# The message ExerciseNotImplemented carries (common/core/include/freezeray/error.hpp).
 NOT_IMPLEMENTED = re.compile(r"exercise\s+(?P<name>ch\d{2}/[a-z0-9-]+)\s+is\s+not\s+implemented")
 
 

@@ -126,8 +126,9 @@ def add_error_include(text: str) -> str:
 
 
 def include_roots(root: Path) -> list[Path]:
-    """The folders quoted #includes are resolved against: common/include and chapters/*/include."""
-    roots = [root / "common" / "include"]
+    """The folders quoted #includes are resolved against: common/include or each room's include
+    folder in common/ (common/*/include), and chapters/*/include."""
+    roots = [root / "common" / "include", *sorted((root / "common").glob("*/include"))]
     roots.extend(sorted((root / "chapters").glob("*/include")))
     return [folder for folder in roots if folder.is_dir()]
 

@@ -29,7 +29,7 @@ import make_student_copy  # noqa: E402
 import prove_exercises  # noqa: E402
 import submission  # noqa: E402
 
-# A stand-in for common/include/freezeray/error.hpp, with its message (grade.py recognises
+# A stand-in for common/core/include/freezeray/error.hpp, with its message (grade.py recognises
 # "exercise NAME is not implemented"); test_teacher_mode.py compiles it.
 ERROR_HPP = """\
 #pragma once
@@ -119,7 +119,7 @@ def synthetic_tree(root: Path) -> None:
     """A tiny FreezeRay-like tree with three exercises in two chapters."""
     write_tree(root, {
         "CMakeLists.txt": "project(Tiny)\n",
-        "common/include/freezeray/error.hpp": ERROR_HPP,
+        "common/core/include/freezeray/error.hpp": ERROR_HPP,
         "chapters/01-naive/include/freezeray/ch01/warps.hpp": WARPS_HPP,
         "chapters/01-naive/src/warps.cpp": WARPS_CPP,
         "chapters/01-naive/src/estimator.cpp": ESTIMATOR_CPP,

@@ -95,7 +95,7 @@ project(Tiny CXX)
 option(FREEZERAY_WERROR "" OFF)
 enable_testing()
 add_library(course chapters/01-naive/src/warps.cpp)
-target_include_directories(course PUBLIC common/include chapters/01-naive/include)
+target_include_directories(course PUBLIC common/core/include chapters/01-naive/include)
 add_executable(exercise_tests tests/exercises/exercises.cpp)
 target_link_libraries(exercise_tests course)
 foreach(name twice four-times settle)
@@ -110,7 +110,7 @@ POINTS = '{"default_points": 1, "points": {"ch01/four-times": 2}}\n'
 def teacher_tree(root: Path) -> None:
     write_tree(root, {
         "CMakeLists.txt": CMAKE,
-        "common/include/freezeray/error.hpp": ERROR_HPP,
+        "common/core/include/freezeray/error.hpp": ERROR_HPP,
         "chapters/01-naive/include/freezeray/ch01/warps.hpp": WARPS_HPP,
         "chapters/01-naive/src/warps.cpp": WARPS_CPP,
         "tests/exercises/exercises.cpp": GRADING_TESTS,

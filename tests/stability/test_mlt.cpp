@@ -11,6 +11,7 @@
 
 #include "freezeray/image.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/ch05/metropolis_light_transport.hpp"
 
 #include <algorithm>

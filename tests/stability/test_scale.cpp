@@ -1,8 +1,8 @@
 // Scale (scenes/hard/scale-1e-4, scale-1e4, far-and-tiny): light transport does not know the
 // unit of length, so the Cornell box scaled by 1e-4 or 1e4 renders the Cornell box's image, and a
 // tiny object inside huge geometry renders as if it were alone. What breaks this is a ray offset
-// or epsilon that does not scale with the geometry (common/src/ray.cpp, make_hit in
-// common/src/accelerator.cpp use pbrt's error bounds, which do).
+// or epsilon that does not scale with the geometry (common/core/src/ray.cpp, make_hit in
+// common/core/src/accelerator.cpp use pbrt's error bounds, which do).
 #include "stability_support.hpp"
 
 #include "test_scenes.hpp"

@@ -2,6 +2,7 @@
 #include "test_scenes.hpp"
 
 #include "freezeray/comparison.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/complete_renderer.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/parameters.hpp"

@@ -5,6 +5,7 @@
 #include "freezeray/integrator.hpp"
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,10 +1,11 @@
 // `auto`: the rules that disqualify a pilot, the choice, and the renders it makes on scenes whose
 // answer the book measured at equal time (book/05-metropolis-light-transport.md).
-#include "freezeray/auto_integrator.hpp"
+#include "freezeray/ch05/auto_integrator.hpp"
 #include "freezeray/comparison.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include "test_scenes.hpp"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 
 using namespace freezeray;
+using namespace freezeray::ch05;
 
 namespace {
 

@@ -4,6 +4,7 @@
 // real camera subpaths in the course's scenes, with delta BSDF vertices (glass, mirror), an
 // environment, and point and spot lights. Deterministic (fixed seeds, no statistical test).
 #include "freezeray/ch04/bdpt_mis_weight.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/ch04/subpaths.hpp"
 
 #include "full_paths.hpp"

@@ -13,6 +13,7 @@
 #include "freezeray/image.hpp"
 #include "freezeray/material_from_mtl.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include "test_scenes.hpp"
 

@@ -22,6 +22,7 @@
 #include "freezeray/error.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/texture_footprint.hpp"
 
 #include <catch2/catch.hpp>

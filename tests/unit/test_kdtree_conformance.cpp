@@ -9,6 +9,7 @@
 
 #include "freezeray/ch06/kdtree_accelerator.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/ch01/warps.hpp"
 #include "test_scenes.hpp"
 

@@ -1,4 +1,4 @@
-// OBJ/MTL loading (common/src/obj_loader.cpp) and mesh transforms (common/src/mesh.cpp).
+// OBJ/MTL loading (common/scene-input/src/obj_loader.cpp) and mesh transforms (common/core/src/mesh.cpp).
 // The fixtures are the small files in tests/data/obj/; each starts with a comment saying what
 // it is for.
 #include "freezeray/error.hpp"

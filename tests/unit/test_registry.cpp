@@ -6,6 +6,7 @@
 #include "freezeray/options.hpp"
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include "test_scenes.hpp"
 

@@ -1,6 +1,7 @@
 // Render states: exact round trips, refusal of foreign or truncated files, exact merging, and
 // resuming an interrupted render in-process.
 #include "freezeray/error.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/render_state.hpp"

@@ -1,4 +1,4 @@
-// The comparison report (common/src/report_*.cpp, false_colour.cpp): every file is written, the
+// The comparison report (common/laboratory/src/report_*.cpp, common/image-files/src/false_colour.cpp): every file is written, the
 // numbers in it are the runs' numbers, the HTML page is self-contained, the best values are
 // marked in the right rows, and a report that cannot be written leaves nothing behind.
 #include "freezeray/comparison.hpp"

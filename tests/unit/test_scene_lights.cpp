@@ -5,6 +5,7 @@
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include "test_scenes.hpp"
 

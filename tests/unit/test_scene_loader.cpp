@@ -2,6 +2,7 @@
 #include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include "test_scenes.hpp"
 

@@ -1,7 +1,7 @@
 // The specular-diffuse-specular probe (common/sds_probe.hpp) and what `auto` does with it: exact
 // shares on scenes built so that the answer is known (tests/data/sds/), the limit's margin on the
 // book's scenes, and auto's choice where the share is above it.
-#include "freezeray/auto_integrator.hpp"
+#include "freezeray/ch05/auto_integrator.hpp"
 #include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/ch02/register_chapter02.hpp"
 #include "freezeray/ch03/register_chapter03.hpp"
@@ -9,7 +9,9 @@
 #include "freezeray/progress.hpp"
 #include "freezeray/registry.hpp"
 #include "freezeray/scene.hpp"
-#include "freezeray/sds_probe.hpp"
+#include "freezeray/scene_loader.hpp"
+#include "freezeray/ch05/sds_probe.hpp"
+#include "freezeray/integrator_advice.hpp"
 
 #include "test_scenes.hpp"
 
@@ -20,6 +22,7 @@
 #include <numbers>
 
 using namespace freezeray;
+using namespace freezeray::ch05;
 
 namespace {
 
@@ -105,19 +108,23 @@ TEST_CASE("auto renders a scene lit by SDS paths with the Markov chain, without 
     CHECK(result.image.pixels() == mlt.image.pixels());
 }
 
-TEST_CASE("the suggestion is mlt above the SDS limit when the renderer has it, the effects' guess elsewhere", "[unit][auto]") {
-    const Scene scene = load_scene(testing::test_data_path("sds/through.json"), testing::full_registry());
-    // Smooth transmission and an area light: the effects alone suggest bdpt (caustics).
-    CHECK(scene.effects.suggest_integrator(testing::full_registry()).name == "bdpt");
-    CHECK(scene.effects.suggest_integrator(testing::full_registry(), SdsShareLimit / 2.0).name == "bdpt");
-    CHECK(scene.effects.suggest_integrator(testing::full_registry(), 1.0).name == "mlt");
-    // Before chapter 05 there is no chain to suggest.
+TEST_CASE("the advice is mlt above the SDS limit when the renderer has it, the effects' guess elsewhere", "[unit][auto]") {
+    CHECK_FALSE(chain_advice(SdsShareLimit / 2.0).has_value());
+    CHECK(chain_advice(1.0).has_value());
+    // Smooth transmission and an area light: where the probe finds no SDS path (the light under
+    // the plane, share 0), the effects alone advise bdpt (caustics); seen and lit through the
+    // plane (share 1), mlt.
+    const Scene below = load_scene(testing::test_data_path("sds/light-below.json"), testing::full_registry());
+    CHECK(advise_integrator(below, testing::full_registry()).name == "bdpt");
+    const Scene through = load_scene(testing::test_data_path("sds/through.json"), testing::full_registry());
+    CHECK(advise_integrator(through, testing::full_registry()).name == "mlt");
+    // Before chapter 05 there is no chain to advise.
     Registry chapter04("ch04", 4);
     register_chapter01(chapter04);
     register_chapter02(chapter04);
     register_chapter03(chapter04);
     register_chapter04(chapter04);
-    CHECK(scene.effects.suggest_integrator(chapter04, 1.0).name == "bdpt");
+    CHECK(advise_integrator(through, chapter04).name == "bdpt");
 }
 
 TEST_CASE("the camera strategy's chance is the light's configuration factor where it is known exactly", "[unit][auto]") {

@@ -6,6 +6,7 @@
 #include "freezeray/integrator.hpp"
 #include "freezeray/progress.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include "test_scenes.hpp"
 

@@ -4,6 +4,7 @@
 #include "freezeray/ch01/lambertian.hpp"
 #include "freezeray/ch01/naive_path_tracer.hpp"
 #include "freezeray/course_catalogue.hpp"
+#include "freezeray/scene.hpp"
 
 namespace freezeray {
 
@@ -21,6 +22,13 @@ void register_chapter01(Registry& registry) {
                             [](const RenderSettings& settings, const Parameters&) {
                                 return std::make_unique<ch01::NaivePathTracer>(settings.max_depth);
                             });
+    // Naive path tracing finds emitters by hitting them, so never a point, spot or directional light.
+    registry.add_advice({"pt-naive", [](const Scene& scene, const AdviceRequest&) -> std::optional<std::string> {
+                             if (scene.effects.delta_lights) return std::nullopt;
+                             return scene.effects.specular
+                                        ? "renders specular surfaces black; importance sampling comes in chapter 02"
+                                        : "the only integrator of chapter 01";
+                         }});
 }
 
 }  // namespace freezeray

@@ -33,7 +33,7 @@ std::optional<TextureEncoding> texture_encoding_from_name(const std::string& nam
 
 namespace {
 
-// True for the formats read_image decodes from 8-bit sRGB (see common/src/image_io.cpp).
+// True for the formats read_image decodes from 8-bit sRGB (see common/image-files/src/image_io.cpp).
 bool is_srgb_encoded_file(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),

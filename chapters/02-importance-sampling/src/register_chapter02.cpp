@@ -6,6 +6,7 @@
 #include "freezeray/ch02/path_tracer.hpp"
 #include "freezeray/ch02/texture_storage.hpp"
 #include "freezeray/error.hpp"
+#include "freezeray/scene.hpp"
 
 #include <string>
 #include <vector>
@@ -77,6 +78,10 @@ void register_chapter02(Registry& registry) {
                             [](const RenderSettings& settings, const Parameters&) {
                                 return std::make_unique<ch02::ImportanceSampledPathTracer>(settings.max_depth);
                             });
+    registry.add_advice({"pt-is", [](const Scene& scene, const AdviceRequest&) -> std::optional<std::string> {
+                             if (scene.effects.delta_lights) return std::nullopt;  // found only by light sampling
+                             return "BSDF importance sampling";
+                         }});
 }
 
 }  // namespace freezeray

@@ -7,6 +7,7 @@
 #include "freezeray/ch03/light_sampling_path_tracer.hpp"
 #include "freezeray/ch03/point_light.hpp"
 #include "freezeray/ch03/spot_light.hpp"
+#include "freezeray/scene.hpp"
 
 namespace freezeray {
 
@@ -50,6 +51,9 @@ void register_chapter03(Registry& registry) {
                     {Combination::MultipleImportanceSampling, MisHeuristic::Balance, LightSelection::Power, false, 0});
     add_path_tracer(registry, "pt-mis-uniform", "pt-mis choosing lights uniformly instead of by power",
                     {Combination::MultipleImportanceSampling, MisHeuristic::Power, LightSelection::Uniform, true, 0});
+    registry.add_advice({"pt-mis", [](const Scene&, const AdviceRequest&) -> std::optional<std::string> {
+                             return "light and BSDF sampling combined";
+                         }});
 
     // Light samplers for pt-nee and pt-mis (`--light-sampler`); power is the default.
     registry.add_light_sampler("power", 3, "in proportion to each light's power, the same at every shading point",

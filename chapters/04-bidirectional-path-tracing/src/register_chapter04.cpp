@@ -3,6 +3,7 @@
 
 #include "freezeray/ch04/bidirectional_path_tracer.hpp"
 #include "freezeray/ch04/light_tracer.hpp"
+#include "freezeray/scene.hpp"
 
 namespace freezeray {
 
@@ -31,6 +32,12 @@ void register_chapter04(Registry& registry) {
                                 return std::make_unique<ch04::BidirectionalPathTracer>(ch04::read_bidirectional_settings(
                                     options, settings.max_depth, ch03::MisHeuristic::Balance));
                             });
+    registry.add_advice({"bdpt", [](const Scene& scene, const AdviceRequest&) -> std::optional<std::string> {
+                             const SceneEffects& e = scene.effects;
+                             if ((e.specular || e.transmission) && (e.area_emitters || e.delta_lights))
+                                 return "caustics through specular surfaces are found from the light side";
+                             return std::nullopt;
+                         }});
 }
 
 }  // namespace freezeray

@@ -2,7 +2,8 @@
 #include "freezeray/ch05/register_chapter05.hpp"
 
 #include "freezeray/ch05/metropolis_light_transport.hpp"
-#include "freezeray/auto_integrator.hpp"
+#include "freezeray/ch05/auto_integrator.hpp"
+#include "freezeray/ch05/sds_probe.hpp"
 
 namespace freezeray {
 
@@ -35,8 +36,11 @@ void register_chapter05(Registry& registry) {
                                 return std::make_unique<ch05::MetropolisLightTransport>(
                                     ch05::read_mlt_settings(options, settings.max_depth, true));
                             });
-    // With every candidate registered, the one chosen by measurement (common/src/auto_integrator.cpp).
-    register_auto_integrator(registry, 5);
+    // With every candidate registered, the one chosen by measurement (chapters/05-metropolis-light-transport/src/auto_integrator.cpp).
+    ch05::register_auto_integrator(registry, 5);
+    // Where specular-diffuse-specular paths light much of the image, the chain (auto trusts only
+    // the chains there too).
+    registry.add_advice({"mlt", ch05::advise_chain});
 }
 
 }  // namespace freezeray

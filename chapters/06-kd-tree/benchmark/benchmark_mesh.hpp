@@ -14,7 +14,7 @@ namespace freezeray::benchmark {
 // (exactly the file's vertex list), every triangle kept, degenerate ones included, and every
 // face_materials entry 0. Materials, normals and texture coordinates are ignored.
 //
-// Why not the renderer's load_obj (common/src/obj_loader.cpp)? It fans polygons around their
+// Why not the renderer's load_obj (common/scene-input/src/obj_loader.cpp)? It fans polygons around their
 // first corner, drops triangles without area and splits the file into one mesh per object;
 // each of these changes the triangle numbering. FRHITS01 files and the shared ray batches
 // (../shared/rays/README.md) number triangles globally in tinyobjloader's triangulate = true

@@ -26,6 +26,7 @@
 #include "freezeray/image.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 #include "freezeray/scratch_arena.hpp"
 
 #include <CLI/CLI.hpp>

@@ -17,6 +17,7 @@
 #include "freezeray/material.hpp"
 #include "freezeray/random.hpp"
 #include "freezeray/scene.hpp"
+#include "freezeray/scene_loader.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -1,6 +1,6 @@
 // Alpha masks made from textures: a material's "alpha", a number in [0, 1] or "alpha_texture",
 // a grey image (MTL map_d), read for every material of this chapter. Where it is below one half
-// the surface is a hole (see AlphaMask in common/include/freezeray/material.hpp).
+// the surface is a hole (see AlphaMask in common/core/include/freezeray/material.hpp).
 #pragma once
 
 #include "freezeray/ch02/texture.hpp"
