@@ -59,7 +59,7 @@ TEST_CASE("a target error stops the render once the estimated relMSE reaches it"
     std::vector<double> estimates;
     settings.on_pass = [&](const Film& film, std::uint64_t, double) { estimates.push_back(film.estimated_relative_mse()); };
     Progress quiet(true);
-    const RenderResult result = testing::full_registry().make_integrator("pt-is", settings, "test")->render(scene, settings, quiet);
+    const RenderResult result = testing::full_registry().integrators.make("pt-is", "test", settings, Parameters::none())->render(scene, settings, quiet);
     REQUIRE(estimates.size() >= 2u);
     CHECK(result.samples_per_pixel < settings.samples_per_pixel);
     CHECK(result.estimated_relative_mse <= settings.target_error);

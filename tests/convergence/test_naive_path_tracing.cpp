@@ -64,7 +64,7 @@ TEST_CASE("pt-naive's MSE against a reference falls like 1/N", "[convergence][ch
         }
     };
     Progress quiet(true);
-    testing::full_registry().make_integrator("pt-naive", settings, "test")->render(scene, settings, quiet);
+    testing::full_registry().integrators.make("pt-naive", "test", settings, Parameters::none())->render(scene, settings, quiet);
     REQUIRE(log_n.size() >= 6u);
 
     const double slope = fit_line(log_n, log_mse).slope;

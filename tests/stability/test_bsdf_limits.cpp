@@ -26,7 +26,9 @@ namespace {
 
 std::unique_ptr<Material> make(const json& description) {
     const Parameters p(description, "test", "/materials/m", ".");
-    return testing::full_registry().make_material(description.at("type").get<std::string>(), p);
+    const Registry& registry = testing::full_registry();
+    return registry.materials.make(description.at("type").get<std::string>(), p.where("type"), p,
+                                   MaterialContext{registry, registry.texture_layouts.default_name()});
 }
 
 // The materials queried: every type of chapter 02, at the limits of its parameters.

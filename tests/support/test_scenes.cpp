@@ -69,10 +69,10 @@ RenderResult render(const TestRender& request) {
     // "integrator@sampler", "integrator@light_sampler", or both, as compare's runs name them.
     const RunName run = parse_run_name(request.integrator, full_registry());
     const std::string& integrator_name = run.integrator;
-    if (!run.sampler.empty()) settings.sampler = full_registry().make_sampler(run.sampler, "test");
+    if (!run.sampler.empty()) settings.sampler = full_registry().samplers.make(run.sampler, "test", Parameters::none());
     if (!run.light_sampler.empty())
-        settings.light_sampler = full_registry().make_light_sampler(run.light_sampler, scene.lights, "test");
-    const auto integrator = full_registry().make_integrator(integrator_name, settings, "test", &chapter_options->parameters());
+        settings.light_sampler = full_registry().light_samplers.make(run.light_sampler, "test", scene.lights, Parameters::none());
+    const auto integrator = full_registry().integrators.make(integrator_name, "test", settings, chapter_options->parameters());
     Progress quiet(true);
     return integrator->render(scene, settings, quiet);
 }

@@ -15,7 +15,7 @@ namespace freezeray::testing {
 
 std::unique_ptr<Accelerator> AcceleratorUnderTest::make() const {
     const Parameters parameters(settings, "test", "/accelerator", ".");
-    return full_registry().make_accelerator(name, "test", &parameters);
+    return full_registry().accelerators.make(name, "test", parameters);
 }
 
 const std::vector<AcceleratorUnderTest>& accelerators_under_test() {
@@ -192,7 +192,7 @@ bool same_hit(const std::optional<Hit>& a, const std::optional<Hit>& b) {
 
 Conformance compare_with_brute_force(const AcceleratorUnderTest& under_test, const std::vector<TriangleMesh>& meshes,
                                      const std::vector<Ray>& rays, std::uint64_t seed) {
-    const auto brute_force = full_registry().make_accelerator("bruteforce", "test");
+    const auto brute_force = full_registry().accelerators.make("bruteforce", "test", Parameters::none());
     const auto tested = under_test.make();
     const std::string& accelerator = under_test.label;
     brute_force->build(meshes);

@@ -44,9 +44,9 @@ RenderResult render_with(const std::string& integrator, const std::string& scene
     settings.samples_per_pixel = spp;
     settings.seed = 5;
     settings.first_sample = first_sample;
-    if (!sampler.empty()) settings.sampler = registry.make_sampler(sampler, "test");
+    if (!sampler.empty()) settings.sampler = registry.samplers.make(sampler, "test", Parameters::none());
     Progress quiet(true);
-    return registry.make_integrator(integrator, settings, "test")->render(scene, settings, quiet);
+    return registry.integrators.make(integrator, "test", settings, Parameters::none())->render(scene, settings, quiet);
 }
 
 // Largest difference of two images relative to the second's values (+ 1e-3).

@@ -44,7 +44,9 @@ const Registry& chapter02_registry() {
 // The material a scene's "/materials/m" block describes; files are relative to `folder`.
 std::unique_ptr<Material> make(const json& description, const std::string& folder = ".") {
     const Parameters p(description, "scene.json", "/materials/m", folder);
-    return chapter02_registry().make_material(description.at("type").get<std::string>(), p);
+    const Registry& registry = chapter02_registry();
+    return registry.materials.make(description.at("type").get<std::string>(), p.where("type"), p,
+                                   MaterialContext{registry, registry.texture_layouts.default_name()});
 }
 
 // The message of the InputError that making the material throws.

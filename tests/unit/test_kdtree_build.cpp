@@ -385,7 +385,7 @@ TEST_CASE("kdtree: a renderer before chapter 06 names the chapter that introduce
     register_chapter04(registry);
     register_chapter05(registry);
     try {
-        registry.make_accelerator("kdtree", "--accel");
+        registry.accelerators.make("kdtree", "--accel", Parameters::none());
         FAIL("no error");
     } catch (const InputError& e) {
         CHECK_THAT(e.what(), Catch::Contains("introduced in chapter 06"));

@@ -60,7 +60,7 @@ TEST_CASE("kdtree: a closed tessellated sphere, from inside and outside (100000 
     append(rays, mixed_rays(meshes, box(Vec3(-3.0f), Vec3(3.0f)), 50000, 2));
     check_conformance("sphere", meshes, rays, 3);
     // From inside, every ray leaves through the sphere: no ray escapes through a crack.
-    const auto tree = full_registry().make_accelerator("kdtree", "test");
+    const auto tree = full_registry().accelerators.make("kdtree", "test", Parameters::none());
     tree->build(meshes);
     int inside = 0, escaped = 0;
     for (const Ray& ray : rays) {
@@ -90,7 +90,7 @@ TEST_CASE("kdtree: the fan of scenes/hard/fan, through its shared centre vertex 
     }
     check_conformance("fan", meshes, rays, 6);
     // Exactly one triangle answers every ray through the centre (a crack would let it through).
-    const auto tree = full_registry().make_accelerator("kdtree", "test");
+    const auto tree = full_registry().accelerators.make("kdtree", "test", Parameters::none());
     tree->build(meshes);
     CHECK(tree->intersect(Ray{Vec3(0, 0, -2), Vec3(0, 0, 1)}));
     CHECK(tree->intersect(Ray{Vec3(0, 0, 2), Vec3(0, 0, -1)}));
@@ -118,7 +118,7 @@ TEST_CASE("occluded_by: the default walk of closest hits answers as bruteforce's
     // a dense soup, half its triangles counted; then none counted (nothing blocks) and all
     // counted (occluded's answer).
     const std::vector<TriangleMesh> meshes{random_soup(200, 0.3f, 20), random_soup(60, 0.05f, 21)};
-    const auto brute_force = full_registry().make_accelerator("bruteforce", "test");
+    const auto brute_force = full_registry().accelerators.make("bruteforce", "test", Parameters::none());
     brute_force->build(meshes);
     PCG32 random(22, 23);
     TriangleFlags half, none, all;

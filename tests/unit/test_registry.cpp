@@ -21,7 +21,7 @@ TEST_CASE("a name from a later chapter is refused with the chapter that introduc
     Registry registry("ch01", 1);
     register_chapter01(registry);
     try {
-        registry.make_integrator("pt-mis", RenderSettings{}, "--integrator");
+        registry.integrators.make("pt-mis", "--integrator", RenderSettings{}, Parameters::none());
         FAIL("no error");
     } catch (const InputError& e) {
         CHECK_THAT(e.what(), Catch::Contains("--integrator") && Catch::Contains("introduced in chapter 03") &&
@@ -32,7 +32,7 @@ TEST_CASE("a name from a later chapter is refused with the chapter that introduc
 TEST_CASE("an unknown name is refused with the nearest registered name", "[unit][registry]") {
     const Registry& registry = testing::full_registry();
     try {
-        registry.make_integrator("pt-naiv", RenderSettings{}, "--integrator");
+        registry.integrators.make("pt-naiv", "--integrator", RenderSettings{}, Parameters::none());
         FAIL("no error");
     } catch (const InputError& e) {
         CHECK_THAT(e.what(), Catch::Contains("did you mean 'pt-naive'"));
@@ -112,7 +112,7 @@ TEST_CASE("every declared option has a flag, a key and a chapter this renderer h
 TEST_CASE("the accelerator comes from the command line, else the scene's block, else the default", "[unit][registry]") {
     const Registry& registry = testing::full_registry();
     const std::string scene = testing::scene_path("cornell-box/scene.json");
-    CHECK(load_scene(scene, registry).accelerator_name == registry.default_accelerator());
+    CHECK(load_scene(scene, registry).accelerator_name == registry.accelerators.default_name());
     SceneLoadOptions options;
     options.accelerator = "bruteforce";
     CHECK(load_scene(scene, registry, options).accelerator_name == "bruteforce");

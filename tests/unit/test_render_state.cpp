@@ -125,7 +125,7 @@ TEST_CASE("a render interrupted mid-pass and resumed equals the uninterrupted re
     RenderSettings settings;
     settings.samples_per_pixel = 200;
     settings.seed = 8;
-    const auto integrator = testing::full_registry().make_integrator("pt-naive", settings, "test");
+    const auto integrator = testing::full_registry().integrators.make("pt-naive", "test", settings, Parameters::none());
     Progress quiet(true);
     const RenderResult whole = integrator->render(scene, settings, quiet);
 

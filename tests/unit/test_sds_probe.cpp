@@ -97,13 +97,13 @@ TEST_CASE("auto renders a scene lit by SDS paths with the Markov chain, without 
     settings.seed = 2;
     settings.threads = 2;
     Progress quiet(true);
-    const RenderResult result = registry.make_integrator("auto", settings, "test")->render(scene, settings, quiet);
+    const RenderResult result = registry.integrators.make("auto", "test", settings, Parameters::none())->render(scene, settings, quiet);
     CHECK(result.integrator == "mlt");
     CHECK_THAT(result.integrator_choice, Catch::StartsWith("mlt: the only candidate; pt-mis, bdpt left out before the pilots: 1 of "
                                                            "the image is lit through a specular surface and seen through one"));
     CHECK_THAT(result.notes.front(), Catch::Contains("(no pilots; SDS probe 1 of the image, "));
     // The whole budget is mlt's own render: the same image as mlt's with the same settings.
-    const RenderResult mlt = registry.make_integrator("mlt", settings, "test")->render(scene, settings, quiet);
+    const RenderResult mlt = registry.integrators.make("mlt", "test", settings, Parameters::none())->render(scene, settings, quiet);
     CHECK(result.samples_per_pixel == mlt.samples_per_pixel);
     CHECK(result.image.pixels() == mlt.image.pixels());
 }

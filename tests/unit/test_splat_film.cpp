@@ -81,7 +81,7 @@ TEST_CASE("a splatting render refuses to resume instead of producing a wrong ima
     RenderSettings settings;
     settings.samples_per_pixel = 2;
     settings.threads = 1;
-    const auto integrator = testing::full_registry().make_integrator("light-tracing", settings, "test");
+    const auto integrator = testing::full_registry().integrators.make("light-tracing", "test", settings, Parameters::none());
     CHECK_FALSE(integrator->resumable());
     Progress quiet(true);
     const RenderResult first = integrator->render(scene, settings, quiet);

@@ -12,13 +12,13 @@ void register_chapter01(Registry& registry) {
     // Chapter 01 opens the course: the registry learns its table of contents, so that a later
     // chapter's capability is refused with the chapter that introduces it.
     registry.set_catalogue(course_catalogue());
-    registry.add_material("diffuse", 1, "Lambertian reflector: albedo (MTL Kd)",
+    registry.materials.add("diffuse", 1, "Lambertian reflector: albedo (MTL Kd)",
                           [](const Parameters& p, const MaterialContext&) {
                               const Spectrum albedo = p.get_spectrum("albedo", Spectrum(0.5f));
                               for (int c = 0; c < 3; ++c) p.check_range("albedo", albedo[c], 0.0f, 1.0f);
                               return std::make_unique<ch01::DiffuseMaterial>(albedo);
                           });
-    registry.add_integrator("pt-naive", 1, "naive path tracing: uniform hemisphere sampling, emission found by hitting it",
+    registry.integrators.add("pt-naive", 1, "naive path tracing: uniform hemisphere sampling, emission found by hitting it",
                             [](const RenderSettings& settings, const Parameters&) {
                                 return std::make_unique<ch01::NaivePathTracer>(settings.max_depth);
                             });

@@ -64,17 +64,17 @@ std::unique_ptr<Material> make_mix_part(const Parameters& p, const MaterialConte
 void register_chapter02(Registry& registry) {
     // Every material of this chapter may have an alpha mask (cut-outs), read beside its own parameters.
     for (const MaterialEntry& entry : chapter02_materials)
-        registry.add_material(entry.name, 2, entry.summary, [make = entry.make](const Parameters& p, const MaterialContext& c) {
+        registry.materials.add(entry.name, 2, entry.summary, [make = entry.make](const Parameters& p, const MaterialContext& c) {
             std::unique_ptr<Material> material = make(p, c);
             material->alpha_mask = ch02::read_alpha_mask(p, c);
             return material;
         });
-    registry.add_texture_layout("linear", 2, "rows of texels one after another, as the image file stores them",
+    registry.texture_layouts.add("linear", 2, "rows of texels one after another, as the image file stores them",
                                 [](const Parameters&) -> TextureStorageMaker {
                                     return {[](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); },
                                             false};
                                 });
-    registry.add_integrator("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
+    registry.integrators.add("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
                             [](const RenderSettings& settings, const Parameters&) {
                                 return std::make_unique<ch02::ImportanceSampledPathTracer>(settings.max_depth);
                             });

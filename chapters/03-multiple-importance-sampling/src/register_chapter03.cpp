@@ -15,7 +15,7 @@ namespace {
 
 void add_path_tracer(Registry& registry, const std::string& name, const std::string& summary,
                      ch03::LightSamplingSettings variant) {
-    registry.add_integrator(name, 3, summary, [variant](const RenderSettings& settings, const Parameters&) {
+    registry.integrators.add(name, 3, summary, [variant](const RenderSettings& settings, const Parameters&) {
         ch03::LightSamplingSettings s = variant;
         s.max_depth = settings.max_depth;
         return std::make_unique<ch03::LightSamplingPathTracer>(s);
@@ -29,14 +29,14 @@ void register_chapter03(Registry& registry) {
                                                                               const Spectrum& emission) {
         return std::make_unique<ch03::TriangleLight>(mesh, triangle, emission);
     });
-    registry.add_light("point", 3, "point light: position, intensity", ch03::make_point_light);
-    registry.add_light("spot", 3, "spot light: position, look_at or direction, intensity, cone_angle_degrees, falloff_start_degrees",
+    registry.lights.add("point", 3, "point light: position, intensity", ch03::make_point_light);
+    registry.lights.add("spot", 3, "spot light: position, look_at or direction, intensity, cone_angle_degrees, falloff_start_degrees",
                        ch03::make_spot_light);
-    registry.add_light("directional", 3, "parallel light from one direction: direction (of travel), irradiance",
+    registry.lights.add("directional", 3, "parallel light from one direction: direction (of travel), irradiance",
                        ch03::make_directional_light);
-    registry.add_light("environment", 3, "equirectangular environment map: file, scale, rotate {axis, degrees}",
+    registry.lights.add("environment", 3, "equirectangular environment map: file, scale, rotate {axis, degrees}",
                        ch03::make_environment_map_light);
-    registry.add_light("constant", 3, "constant environment: radiance", ch03::make_constant_environment_light);
+    registry.lights.add("constant", 3, "constant environment: radiance", ch03::make_constant_environment_light);
 
     using ch03::Combination;
     using ch03::LightSelection;
@@ -56,11 +56,11 @@ void register_chapter03(Registry& registry) {
                          }});
 
     // Light samplers for pt-nee and pt-mis (`--light-sampler`); power is the default.
-    registry.add_light_sampler("power", 3, "in proportion to each light's power, the same at every shading point",
+    registry.light_samplers.add("power", 3, "in proportion to each light's power, the same at every shading point",
                                [](const std::vector<std::unique_ptr<Light>>& lights, const Parameters&) {
                                    return std::make_unique<ch03::FixedLightSampler>(lights, LightSelection::Power);
                                });
-    registry.add_light_sampler("uniform", 3, "every light with the same probability, at every shading point",
+    registry.light_samplers.add("uniform", 3, "every light with the same probability, at every shading point",
                                [](const std::vector<std::unique_ptr<Light>>& lights, const Parameters&) {
                                    return std::make_unique<ch03::FixedLightSampler>(lights, LightSelection::Uniform);
                                });

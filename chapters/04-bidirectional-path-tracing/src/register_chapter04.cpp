@@ -12,7 +12,7 @@ void register_chapter04(Registry& registry) {
                          "write each strategy's image, weighted and unweighted, and their grids into this folder "
                          "(bidirectional path tracing)",
                          {"bdpt", "bdpt-balance"}, 4});
-    registry.add_integrator("light-tracing", 4,
+    registry.integrators.add("light-tracing", 4,
                             "light tracing: paths from the lights, every vertex connected to the camera and splatted "
                             "(bdpt's t = 1 strategies alone)",
                             [](const RenderSettings& settings, const Parameters&) {
@@ -20,14 +20,14 @@ void register_chapter04(Registry& registry) {
                                 s.max_depth = settings.max_depth;
                                 return std::make_unique<ch04::LightTracer>(s);
                             });
-    registry.add_integrator("bdpt", 4,
+    registry.integrators.add("bdpt", 4,
                             "bidirectional path tracing: camera and light subpaths joined in every way, combined by "
                             "MIS (power heuristic)",
                             [](const RenderSettings& settings, const Parameters& options) {
                                 return std::make_unique<ch04::BidirectionalPathTracer>(ch04::read_bidirectional_settings(
                                     options, settings.max_depth, ch03::MisHeuristic::Power));
                             });
-    registry.add_integrator("bdpt-balance", 4, "bidirectional path tracing with the balance heuristic",
+    registry.integrators.add("bdpt-balance", 4, "bidirectional path tracing with the balance heuristic",
                             [](const RenderSettings& settings, const Parameters& options) {
                                 return std::make_unique<ch04::BidirectionalPathTracer>(ch04::read_bidirectional_settings(
                                     options, settings.max_depth, ch03::MisHeuristic::Balance));

@@ -253,8 +253,8 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
 void register_auto_integrator(Registry& registry, int chapter) {
     std::vector<std::pair<std::string, IntegratorFactory>> factories;
     for (const char* name : {"pt-mis", "bdpt", "mlt"})
-        if (IntegratorFactory factory = registry.integrator_factory(name)) factories.emplace_back(name, std::move(factory));
-    registry.add_integrator("auto", chapter,
+        if (const IntegratorFactory* factory = registry.integrators.find(name)) factories.emplace_back(name, *factory);
+    registry.integrators.add("auto", chapter,
                             "the integrator chosen by measurement: short pilots with pt-mis, bdpt and mlt, the most "
                             "efficient one whose error estimate can be trusted renders the rest",
                             [factories](const RenderSettings& settings, const Parameters& options) {

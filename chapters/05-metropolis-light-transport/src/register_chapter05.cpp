@@ -22,14 +22,14 @@ void register_chapter05(Registry& registry) {
     declare("--mlt-chains", "mlt_chains", OptionType::Integer,
             "mlt: the number of Markov chains (default " + std::to_string(defaults.chains) + ")");
 
-    registry.add_integrator("mlt", 5,
+    registry.integrators.add("mlt", 5,
                             "Metropolis light transport in primary sample space, driving bdpt: Markov chains that "
                             "spend their samples where the light is",
                             [](const RenderSettings& settings, const Parameters& options) {
                                 return std::make_unique<ch05::MetropolisLightTransport>(
                                     ch05::read_mlt_settings(options, settings.max_depth, false));
                             });
-    registry.add_integrator("mlt-multiplexed", 5,
+    registry.integrators.add("mlt-multiplexed", 5,
                             "multiplexed Metropolis light transport: each state one path length and one bdpt strategy, "
                             "chosen by the chain",
                             [](const RenderSettings& settings, const Parameters& options) {

@@ -19,7 +19,7 @@ BuiltAccelerator build_timed(std::string name, std::unique_ptr<Accelerator> acce
 
 BuiltAccelerator build_registry_accelerator(const Registry& registry, const std::string& name,
                                             const Parameters& settings, const std::vector<TriangleMesh>& meshes) {
-    BuiltAccelerator built = build_timed(name, registry.make_accelerator(name, "--accel", &settings), meshes);
+    BuiltAccelerator built = build_timed(name, registry.accelerators.make(name, "--accel", settings), meshes);
     if (const std::optional<std::size_t> bytes = built.accelerator->memory_bytes())
         built.memory_bytes = static_cast<double>(*bytes);
     return built;

@@ -185,7 +185,7 @@ int run(const Options& options, const Registry& registry) {
                                     OptionTarget::Accelerator);
     for (const std::string& name : accelerators) {
         if (name != EmbreeName)
-            registry.make_accelerator(name, "--accel", &settings.parameters());
+            registry.accelerators.make(name, "--accel", settings.parameters());
         else if (!embree_is_available())
             throw InputError("--accel", "'embree': this ray-benchmark was built without Embree 3 (libembree-dev)");
     }

@@ -10,14 +10,14 @@
 namespace freezeray {
 
 void register_chapter06(Registry& registry) {
-    registry.add_accelerator("kdtree", 6,
+    registry.accelerators.add("kdtree", 6,
                              "SAH KD-tree built in O(N log N) with perfect splits (Wald and Havran 2006), "
                              "traversed front to back; hits identical to bruteforce",
                              [](const Parameters& parameters) {
                                  return std::make_unique<ch06::KdTreeAccelerator>(ch06::read_kdtree_settings(parameters));
                              });
-    registry.set_default_accelerator("kdtree");
-    registry.add_integrator("traversal-cost", 6,
+    registry.accelerators.set_default("kdtree");
+    registry.integrators.add("traversal-cost", 6,
                             "not light: the KD-tree's interior nodes, leaves or triangle tests per camera ray, in false colour",
                             [](const RenderSettings&, const Parameters& parameters) {
                                 return std::make_unique<ch06::TraversalCostIntegrator>(

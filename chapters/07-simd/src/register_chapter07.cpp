@@ -11,14 +11,14 @@
 namespace freezeray {
 
 void register_chapter07(Registry& registry) {
-    registry.add_accelerator("kdtree-simd", 7,
+    registry.accelerators.add("kdtree-simd", 7,
                              "chapter 06's KD-tree with its leaves in packets of 4, 8 or 16 triangles, tested at "
                              "once with SSE, AVX or AVX-512; hits identical to kdtree and bruteforce",
                              [](const Parameters& parameters) {
                                  return std::make_unique<ch07::KdTreeSimdAccelerator>(
                                      ch07::read_kdtree_simd_settings(parameters));
                              });
-    registry.set_default_accelerator("kdtree-simd");
+    registry.accelerators.set_default("kdtree-simd");
     registry.add_option({"--simd-width", "simd_width", OptionType::Integer, OptionTarget::Accelerator,
                          "kdtree-simd: triangles per packet, 1, 4, 8 or 16 (this processor runs " +
                              ch07::runnable_widths() + "; default 0, the widest)",

@@ -287,7 +287,7 @@ int main(int argc, char** argv) {
         // The scene loaded with the recording layout (footprints on, as the trilinear filter has them).
         Recording recording;
         Registry registry = make_complete_registry("texture-benchmark");
-        registry.add_texture_layout("recording", 8, "texture-benchmark's: notes every lookup",
+        registry.texture_layouts.add("recording", 8, "texture-benchmark's: notes every lookup",
                                     [&recording](const Parameters&) -> TextureStorageMaker {
                                         return {[&recording](const Image& image) {
                                                     return std::make_shared<RecordingStorage>(image, recording);

@@ -22,15 +22,15 @@ TextureLayoutFactory layout_factory(MakeStorage make) {
 }  // namespace
 
 void register_chapter08(Registry& registry) {
-    registry.add_texture_layout("linear", 8,
+    registry.texture_layouts.add("linear", 8,
                                 "rows of texels one after another, as the image file stores them, with MIP levels "
                                 "and 8-bit texels where the file had them",
                                 layout_factory(ch08::make_row_major_storage));
-    registry.add_texture_layout("tiled", 8,
+    registry.texture_layouts.add("tiled", 8,
                                 "square tiles of texels (4 x 4 by default) that keep neighbours in one cache line, "
                                 "with MIP levels and 8-bit texels where the file had them",
                                 layout_factory(ch08::make_tiled_storage));
-    registry.set_default_texture_layout("tiled");
+    registry.texture_layouts.set_default("tiled");
     registry.add_option({"--texture-layout", "layout", OptionType::Text, OptionTarget::Textures,
                          "how image textures are stored: linear or tiled (default: the scene's \"textures\" "
                          "block, else tiled)",

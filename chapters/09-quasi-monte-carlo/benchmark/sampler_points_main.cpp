@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         const Registry registry = make_complete_registry("sampler-points");
-        const std::unique_ptr<Sampler> sampler = registry.make_sampler(sampler_name, "--sampler");
+        const std::unique_ptr<Sampler> sampler = registry.samplers.make(sampler_name, "--sampler", Parameters::none());
         sampler->set_seed(seed);
         sampler->plan_render(width, height, count);
         const auto pixel_index = static_cast<std::uint32_t>(y * width + x);

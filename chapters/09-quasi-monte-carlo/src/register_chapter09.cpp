@@ -9,18 +9,18 @@
 namespace freezeray {
 
 void register_chapter09(Registry& registry) {
-    registry.add_sampler("stratified", 9,
+    registry.samplers.add("stratified", 9,
                          "jittered: every 1D and 2D draw stratified over each block of 1, 1, 2, 4, 8, ... samples of a pixel",
                          [](const Parameters&) { return std::make_unique<ch09::StratifiedSampler>(); });
-    registry.add_sampler("sobol", 9,
+    registry.samplers.add("sobol", 9,
                          "Sobol (0,2)-sequence per dimension pair, index shuffled and points Owen-scrambled by hashing "
                          "(Burley 2020), independent across pairs and pixels",
                          [](const Parameters&) { return std::make_unique<ch09::SobolSampler>(); });
-    registry.add_sampler("zsobol", 9,
+    registry.samplers.add("zsobol", 9,
                          "Sobol over Morton-ordered pixels (Ahmed and Wonka 2020, pbrt-v4's ZSobol): neighbouring pixels take "
                          "complementary blocks of one sequence, so the error is blue noise when --spp is known",
                          [](const Parameters&) { return std::make_unique<ch09::ZSobolSampler>(); });
-    registry.set_default_sampler("sobol");
+    registry.samplers.set_default("sobol");
 }
 
 }  // namespace freezeray

@@ -98,7 +98,7 @@ Measurement measure(const Registry& registry, const std::string& name, const Sce
     Measurement m;
     m.sampler = name;
     const auto build_start = std::chrono::steady_clock::now();
-    const std::unique_ptr<LightSampler> sampler = registry.make_light_sampler(name, scene.lights, "--samplers");
+    const std::unique_ptr<LightSampler> sampler = registry.light_samplers.make(name, "--samplers", scene.lights, Parameters::none());
     m.build_milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - build_start).count();
     std::vector<double> passes;
     std::size_t chosen = 0;
@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
                             m.sampler.c_str(), m.nanoseconds_per_choice, m.build_milliseconds, 100.0 * m.chosen_fraction);
         }
         if (!map_path.empty()) {
-            const std::unique_ptr<LightSampler> sampler = registry.make_light_sampler(map_sampler, scene.lights, "--map-sampler");
+            const std::unique_ptr<LightSampler> sampler = registry.light_samplers.make(map_sampler, "--map-sampler", scene.lights, Parameters::none());
             write_image(map_path, choice_map(scene, *sampler));
             std::fprintf(stderr, "choice map: %s\n", map_path.c_str());
         }

@@ -7,7 +7,7 @@
 namespace freezeray {
 
 void register_chapter10(Registry& registry) {
-    registry.add_light_sampler("bvh", 10,
+    registry.light_samplers.add("bvh", 10,
                                "a light BVH walked from the shading point, each light in proportion to a bound on what it "
                                "can send there (Conty Estevez and Kulla 2018), with a defensive share of 0.2 of the choices "
                                "uniform; environment and directional lights beside the tree",
@@ -15,12 +15,12 @@ void register_chapter10(Registry& registry) {
                                    return std::make_unique<ch10::DefensiveLightSampler>(
                                        std::make_unique<ch10::BvhLightSampler>(lights), lights, ch10::DefensiveShare);
                                });
-    registry.add_light_sampler("bvh-tree", 10,
+    registry.light_samplers.add("bvh-tree", 10,
                                "the light BVH alone, without bvh's defensive share (for comparison)",
                                [](const std::vector<std::unique_ptr<Light>>& lights, const Parameters&) {
                                    return std::make_unique<ch10::BvhLightSampler>(lights);
                                });
-    registry.set_default_light_sampler("bvh");
+    registry.light_samplers.set_default("bvh");
 }
 
 }  // namespace freezeray

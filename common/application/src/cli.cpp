@@ -66,7 +66,7 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     const std::string light_sampler = light_sampler_name("", scene, registry);
     std::unique_ptr<LightSampler> sampler;
     if (!light_sampler.empty() && !scene.lights.empty()) {
-        sampler = registry.make_light_sampler(light_sampler, scene.lights, scene.file + ": /render/light_sampler");
+        sampler = registry.light_samplers.make(light_sampler, scene.file + ": /render/light_sampler", scene.lights, Parameters::none());
         std::cout << "light sampler: " << light_sampler << "\n";
         for (const std::string& line : sampler->description()) std::cout << "  " << line << "\n";
     }
@@ -173,19 +173,19 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     for (const auto& e : registry.list(CapabilityKind::Accelerator)) accelerators += (accelerators.empty() ? "" : ", ") + e.name;
     render_command->add_option("--accel", render.accelerator,
                                "ray-intersection accelerator, one of: " + accelerators + " (default: the scene's, else " +
-                                   registry.default_accelerator() + ")");
+                                   registry.accelerators.default_name() + ")");
     std::string samplers;
     for (const auto& e : registry.list(CapabilityKind::Sampler)) samplers += (samplers.empty() ? "" : ", ") + e.name;
     render_command->add_option("--sampler", render.sampler,
                                "where the per-pixel integrators' numbers come from, one of: " + samplers +
-                                   " (default: the scene's, else " + registry.default_sampler() + ")");
+                                   " (default: the scene's, else " + registry.samplers.default_name() + ")");
     std::string light_samplers;
     for (const auto& e : registry.list(CapabilityKind::LightSampler))
         light_samplers += (light_samplers.empty() ? "" : ", ") + e.name;
     if (!light_samplers.empty())
         render_command->add_option("--light-sampler", render.light_sampler,
                                    "how pt-nee and pt-mis choose the light to sample at a shading point, one of: " +
-                                       light_samplers + " (default: the scene's, else " + registry.default_light_sampler() + ")");
+                                       light_samplers + " (default: the scene's, else " + registry.light_samplers.default_name() + ")");
     render_command->add_option("--threads", render.threads, "threads (default: every core)");
     render_command->add_option("--seed", render.seed, "random seed (default: the scene's)");
     render_command->add_option("--max-depth", render.max_depth, "maximum path length in segments");
@@ -239,12 +239,12 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
         ->check(CLI::PositiveNumber);
     compare_command->add_option("--sampler", compare.sampler,
                                 "the runs' sampler, one of: " + samplers + " (a run may name its own: pt-mis@sobol; default: the scene's, else " +
-                                    registry.default_sampler() + ")");
+                                    registry.samplers.default_name() + ")");
     if (!light_samplers.empty())
         compare_command->add_option("--light-sampler", compare.light_sampler,
                                     "the runs' light sampler, one of: " + light_samplers +
                                         " (a run may name its own: pt-mis@bvh; default: the scene's, else " +
-                                        registry.default_light_sampler() + ")");
+                                        registry.light_samplers.default_name() + ")");
     compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
     compare_command->add_option("--seed", compare.seed,
                                 "random seed of the runs (default 0); a reference made with --make-reference gets another");

@@ -55,7 +55,7 @@ RunName parse_run_name(const std::string& run, const Registry& registry) {
 SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
                              const Integrator& integrator, const std::string& integrator_name, const Registry& registry) {
     const bool named = !requested.empty() || !scene.defaults.sampler.empty();
-    std::string name = !requested.empty() ? requested : named ? scene.defaults.sampler : registry.default_sampler();
+    std::string name = !requested.empty() ? requested : named ? scene.defaults.sampler : registry.samplers.default_name();
     const std::string at = !requested.empty() ? where : scene.file + ": /render/sampler";
     registry.require(CapabilityKind::Sampler, name, at);
     if (!integrator.draws_from_sampler() && name != "independent") {
@@ -65,12 +65,12 @@ SamplerChoice choose_sampler(const std::string& requested, const std::string& wh
                                  "belong to pixels, take --sampler " + name);
         name = "independent";
     }
-    return {name, registry.make_sampler(name, at)};
+    return {name, registry.samplers.make(name, at, Parameters::none())};
 }
 
 std::string light_sampler_name(const std::string& requested, const Scene& scene, const Registry& registry) {
     return !requested.empty() ? requested : !scene.defaults.light_sampler.empty() ? scene.defaults.light_sampler
-                                                                                  : registry.default_light_sampler();
+                                                                                  : registry.light_samplers.default_name();
 }
 
 LightSamplerChoice choose_light_sampler(const std::string& requested, const std::string& where, const Scene& scene,
@@ -85,7 +85,7 @@ LightSamplerChoice choose_light_sampler(const std::string& requested, const std:
     }
     const std::string name = light_sampler_name(requested, scene, registry);
     if (name.empty()) return {};
-    return {name, registry.make_light_sampler(name, scene.lights, at)};
+    return {name, registry.light_samplers.make(name, at, scene.lights, Parameters::none())};
 }
 
 namespace {
@@ -205,7 +205,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     registry.require(CapabilityKind::Integrator, integrator_name, "--integrator");
     check_options_apply(options.chapter_options, registry.options(), OptionTarget::Integrator, integrator_name);
     const auto chapter_options = integrator_options(scene, options.chapter_options, registry);
-    const auto integrator = registry.make_integrator(integrator_name, settings, "--integrator", &chapter_options->parameters());
+    const auto integrator = registry.integrators.make(integrator_name, "--integrator", settings, chapter_options->parameters());
     if (const std::string w = unreachable_lights_warning(scene, *integrator, integrator_name); !w.empty())
         std::cerr << "warning: " << w << "\n";
 
@@ -315,7 +315,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
             const bool drew_from_sampler =
                 result.integrator.empty()
                     ? integrator->draws_from_sampler()
-                    : registry.make_integrator(result.integrator, settings, "--integrator", &chapter_options->parameters())
+                    : registry.integrators.make(result.integrator, "--integrator", settings, chapter_options->parameters())
                           ->draws_from_sampler();
             if (sampler.name != "independent" && drew_from_sampler)
                 estimate += " (as if independent: " + sampler.name + "'s is lower)";

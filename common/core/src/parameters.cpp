@@ -23,6 +23,12 @@ const char* json_type_name(const nlohmann::json& j) {
 
 }  // namespace
 
+const Parameters& Parameters::none() {
+    static const nlohmann::json empty = nlohmann::json::object();
+    static const Parameters parameters(empty, "(defaults)", "", ".");
+    return parameters;
+}
+
 Parameters::Parameters(const nlohmann::json& json, std::string file, std::string path, std::string base_directory)
     : json_(json), file_(std::move(file)), path_(std::move(path)), base_directory_(std::move(base_directory)) {
     if (!json_.is_object()) throw InputError(where(), std::string("expected an object, found ") + json_type_name(json_));

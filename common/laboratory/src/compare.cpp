@@ -118,7 +118,7 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     for (const std::string& run_name : request.integrators) {
         const RunName run = parse_run_name(run_name, registry);
         const std::string& name = run.integrator;
-        integrators.push_back(registry.make_integrator(name, settings, "--integrators", &options->parameters()));
+        integrators.push_back(registry.integrators.make(name, "--integrators", settings, options->parameters()));
         samplers.push_back(choose_sampler(!run.sampler.empty() ? run.sampler : request.sampler,
                                           !run.sampler.empty() ? "--integrators" : "--sampler", scene, *integrators.back(), name,
                                           registry));

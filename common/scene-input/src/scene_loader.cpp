@@ -151,7 +151,7 @@ std::unique_ptr<Material> build_material(const std::string& name, const nlohmann
     const std::string type = p.require_string("type");
     const Spectrum emission = p.get_spectrum("emission", Spectrum(0.0f));
     for (int c = 0; c < 3; ++c) p.check_range("emission", emission[c], 0.0f, 1e30f);
-    std::unique_ptr<Material> material = context.registry.make_material(type, p, context);
+    std::unique_ptr<Material> material = context.registry.materials.make(type, p.where("type"), p, context);
     material->name = name;
     material->type = type;
     material->emission = emission;
@@ -175,7 +175,7 @@ void read_lights(const Parameters& top, const nlohmann::json& root, Scene& scene
         if (type == "area")
             throw InputError(p.where("type"), "area lights come from emissive materials (\"emission\" or MTL Ke), "
                                               "not from the \"lights\" array");
-        std::unique_ptr<Light> light = registry.make_light(type, p);
+        std::unique_ptr<Light> light = registry.lights.make(type, p.where("type"), p);
         light->where = p.where();
         for (std::string& w : p.unused_key_warnings()) scene.warnings.push_back(std::move(w));
         if (light->type() == LightType::Infinite) {
@@ -232,7 +232,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     // The layout image textures are stored in: the command line's, else the "textures" block's,
     // else the renderer's default (none before chapter 02, which has no image textures).
     // Its settings are read (and checked) here, whether or not the scene has image textures.
-    scene.texture_layout = registry.default_texture_layout();
+    scene.texture_layout = registry.texture_layouts.default_name();
     const OptionParameters textures(top.has("textures") ? &root.at("textures") : nullptr, path, "/textures", base,
                                     options.options, registry.options(), OptionTarget::Textures);
     const Parameters& texture_settings = textures.parameters();
@@ -374,7 +374,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     }
     scene.accelerator_name = !options.accelerator.empty() ? options.accelerator
                              : !block_type.empty()        ? block_type
-                                                          : registry.default_accelerator();
+                                                          : registry.accelerators.default_name();
     const std::string accelerator_where = !options.accelerator.empty() ? "--accel" : !block_type.empty() ? top.where("accelerator") + "/type" : "default accelerator";
     registry.require(CapabilityKind::Accelerator, scene.accelerator_name, accelerator_where);
     check_options_apply(options.options, registry.options(), OptionTarget::Accelerator, scene.accelerator_name);
@@ -382,7 +382,7 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     const OptionParameters accelerator_options(block_applies ? block : nullptr, path, "/accelerator", base, options.options,
                                                registry.options(), OptionTarget::Accelerator);
     accelerator_options.parameters().get_string("type", "");
-    scene.accelerator = registry.make_accelerator(scene.accelerator_name, accelerator_where, &accelerator_options.parameters());
+    scene.accelerator = registry.accelerators.make(scene.accelerator_name, accelerator_where, accelerator_options.parameters());
     for (std::string& w : accelerator_options.parameters().unused_key_warnings()) scene.warnings.push_back(std::move(w));
     scene.accelerator->build(scene.meshes);
     scene.has_alpha_masks = std::any_of(scene.materials.begin(), scene.materials.end(),

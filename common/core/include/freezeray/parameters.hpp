@@ -25,6 +25,8 @@ public:
     // json: the object; file: the scene file; path: JSON pointer of the object ("/materials/light");
     // base_directory: where relative file names are resolved.
     Parameters(const nlohmann::json& json, std::string file, std::string path, std::string base_directory);
+    // No parameters at all: every setting at its default (a capability made without a scene block).
+    static const Parameters& none();
 
     const std::string& file() const { return file_; }
     const std::string& path() const { return path_; }
