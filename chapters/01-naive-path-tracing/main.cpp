@@ -4,6 +4,6 @@
 
 int main(int argc, char** argv) {
     freezeray::Registry registry("ch01", 1);
-    freezeray::register_chapter01(registry);
+    freezeray::register_chapter01(registry);  // and every chapter before it
     return freezeray::run_command_line(argc, argv, registry);
 }

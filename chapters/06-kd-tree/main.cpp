@@ -1,19 +1,9 @@
 // ch06: the renderer of chapters 01 to 06.
-#include "freezeray/ch01/register_chapter01.hpp"
-#include "freezeray/ch02/register_chapter02.hpp"
-#include "freezeray/ch03/register_chapter03.hpp"
-#include "freezeray/ch04/register_chapter04.hpp"
-#include "freezeray/ch05/register_chapter05.hpp"
 #include "freezeray/ch06/register_chapter06.hpp"
 #include "freezeray/cli.hpp"
 
 int main(int argc, char** argv) {
     freezeray::Registry registry("ch06", 6);
-    freezeray::register_chapter01(registry);
-    freezeray::register_chapter02(registry);
-    freezeray::register_chapter03(registry);
-    freezeray::register_chapter04(registry);
-    freezeray::register_chapter05(registry);
-    freezeray::register_chapter06(registry);
+    freezeray::register_chapter06(registry);  // and every chapter before it
     return freezeray::run_command_line(argc, argv, registry);
 }

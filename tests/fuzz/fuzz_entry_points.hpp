@@ -91,7 +91,6 @@ inline const Workspace& workspace() {
 inline const Registry& fuzz_registry() {
     static const Registry registry = [] {
         Registry r("freezeray", 2);
-        register_chapter01(r);
         register_chapter02(r);
         return r;
     }();

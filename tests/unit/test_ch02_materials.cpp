@@ -34,7 +34,6 @@ namespace {
 const Registry& chapter02_registry() {
     static const Registry registry = [] {
         Registry r("ch02", 2);
-        register_chapter01(r);
         register_chapter02(r);
         return r;
     }();

@@ -356,12 +356,6 @@ TEST_CASE("ch08: hits carry the footprint only when a texture layout filters by 
     SceneLoadOptions bilinear_options;
     bilinear_options.options.values["filter"] = "bilinear";
     Registry chapter07("ch07", 7);
-    register_chapter01(chapter07);
-    register_chapter02(chapter07);
-    register_chapter03(chapter07);
-    register_chapter04(chapter07);
-    register_chapter05(chapter07);
-    register_chapter06(chapter07);
     register_chapter07(chapter07);
     for (const Scene& scene : {load_scene(path, full_registry(), bilinear_options), load_scene(path, chapter07)}) {
         CHECK_FALSE(scene.texture_footprints);

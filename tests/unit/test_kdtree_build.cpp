@@ -379,10 +379,6 @@ TEST_CASE("kdtree: settings from a JSON object, with errors that name the place"
 
 TEST_CASE("kdtree: a renderer before chapter 06 names the chapter that introduces it", "[unit][kdtree]") {
     Registry registry("ch05", 5);
-    register_chapter01(registry);
-    register_chapter02(registry);
-    register_chapter03(registry);
-    register_chapter04(registry);
     register_chapter05(registry);
     try {
         registry.accelerators.make("kdtree", "--accel", Parameters::none());

@@ -172,7 +172,6 @@ TEST_CASE("light errors name the JSON path or the file", "[unit][scene][ch03]") 
 
 TEST_CASE("a chapter-02 renderer refuses a point light: introduced in chapter 03", "[unit][scene][ch03]") {
     Registry chapter02("ch02", 2);
-    register_chapter01(chapter02);
     register_chapter02(chapter02);
     TemporaryFolder folder;
     const std::string path = make_scene(folder, R"([{"type": "point", "position": [0, 0.5, 0]}])");

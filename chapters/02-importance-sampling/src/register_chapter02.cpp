@@ -1,5 +1,6 @@
 // Chapter 02's registrations.
 #include "freezeray/ch02/register_chapter02.hpp"
+#include "freezeray/ch01/register_chapter01.hpp"
 
 #include "freezeray/ch02/alpha_mask.hpp"
 #include "freezeray/ch02/materials.hpp"
@@ -62,6 +63,7 @@ std::unique_ptr<Material> make_mix_part(const Parameters& p, const MaterialConte
 }  // namespace
 
 void register_chapter02(Registry& registry) {
+    register_chapter01(registry);  // chapter 01 first
     // Every material of this chapter may have an alpha mask (cut-outs), read beside its own parameters.
     for (const MaterialEntry& entry : chapter02_materials)
         registry.materials.add(entry.name, 2, entry.summary, [make = entry.make](const Parameters& p, const MaterialContext& c) {

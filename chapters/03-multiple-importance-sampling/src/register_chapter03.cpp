@@ -1,5 +1,6 @@
 // Chapter 03's registrations.
 #include "freezeray/ch03/register_chapter03.hpp"
+#include "freezeray/ch02/register_chapter02.hpp"
 
 #include "freezeray/ch03/area_light.hpp"
 #include "freezeray/ch03/directional_light.hpp"
@@ -25,6 +26,7 @@ void add_path_tracer(Registry& registry, const std::string& name, const std::str
 }  // namespace
 
 void register_chapter03(Registry& registry) {
+    register_chapter02(registry);  // chapters 01 to 02 first
     registry.add_area_light(3, "every emissive triangle, sampled by area", [](const TriangleMesh& mesh, std::uint32_t triangle,
                                                                               const Spectrum& emission) {
         return std::make_unique<ch03::TriangleLight>(mesh, triangle, emission);

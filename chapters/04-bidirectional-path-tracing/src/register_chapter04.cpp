@@ -1,5 +1,6 @@
 // Chapter 04's registrations.
 #include "freezeray/ch04/register_chapter04.hpp"
+#include "freezeray/ch03/register_chapter03.hpp"
 
 #include "freezeray/ch04/bidirectional_path_tracer.hpp"
 #include "freezeray/ch04/light_tracer.hpp"
@@ -8,6 +9,7 @@
 namespace freezeray {
 
 void register_chapter04(Registry& registry) {
+    register_chapter03(registry);  // chapters 01 to 03 first
     registry.add_option({"--bdpt-strategies", "bdpt_strategies", OptionType::Text, OptionTarget::Integrator,
                          "write each strategy's image, weighted and unweighted, and their grids into this folder "
                          "(bidirectional path tracing)",

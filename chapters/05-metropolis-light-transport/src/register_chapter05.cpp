@@ -1,5 +1,6 @@
 // Chapter 05's registrations: the two Metropolis integrators and their options.
 #include "freezeray/ch05/register_chapter05.hpp"
+#include "freezeray/ch04/register_chapter04.hpp"
 
 #include "freezeray/ch05/metropolis_light_transport.hpp"
 #include "freezeray/ch05/auto_integrator.hpp"
@@ -8,6 +9,7 @@
 namespace freezeray {
 
 void register_chapter05(Registry& registry) {
+    register_chapter04(registry);  // chapters 01 to 04 first
     const ch05::MltSettings defaults;
     const std::vector<std::string> mlt_integrators = {"mlt", "mlt-multiplexed"};
     auto declare = [&](const char* flag, const char* key, OptionType type, const std::string& help) {

@@ -1,6 +1,7 @@
 // Chapter 06's registrations: the KD-tree, its settings as options, and the KD-tree as the
 // default accelerator from this chapter on.
 #include "freezeray/ch06/register_chapter06.hpp"
+#include "freezeray/ch05/register_chapter05.hpp"
 
 #include "freezeray/ch06/kdtree_accelerator.hpp"
 #include "freezeray/ch06/traversal_cost_integrator.hpp"
@@ -10,6 +11,7 @@
 namespace freezeray {
 
 void register_chapter06(Registry& registry) {
+    register_chapter05(registry);  // chapters 01 to 05 first
     registry.accelerators.add("kdtree", 6,
                              "SAH KD-tree built in O(N log N) with perfect splits (Wald and Havran 2006), "
                              "traversed front to back; hits identical to bruteforce",

@@ -1,6 +1,7 @@
 // Chapter 07's registrations: the vectorised KD-tree, the default accelerator from this chapter
 // on, which reads chapter 06's tree settings and its own packet width.
 #include "freezeray/ch07/register_chapter07.hpp"
+#include "freezeray/ch06/register_chapter06.hpp"
 
 #include "freezeray/ch07/kdtree_simd_accelerator.hpp"
 #include "freezeray/ch07/packet_kernels.hpp"
@@ -11,6 +12,7 @@
 namespace freezeray {
 
 void register_chapter07(Registry& registry) {
+    register_chapter06(registry);  // chapters 01 to 06 first
     registry.accelerators.add("kdtree-simd", 7,
                              "chapter 06's KD-tree with its leaves in packets of 4, 8 or 16 triangles, tested at "
                              "once with SSE, AVX or AVX-512; hits identical to kdtree and bruteforce",

@@ -1,6 +1,7 @@
 // Chapter 08's registrations: two texture layouts with MIP maps and compact texels, and their
 // settings (the scene's "textures" block, or the command line).
 #include "freezeray/ch08/register_chapter08.hpp"
+#include "freezeray/ch07/register_chapter07.hpp"
 
 #include "freezeray/ch08/mip_mapped_storage.hpp"
 #include "freezeray/ch08/texture_layout_settings.hpp"
@@ -22,6 +23,7 @@ TextureLayoutFactory layout_factory(MakeStorage make) {
 }  // namespace
 
 void register_chapter08(Registry& registry) {
+    register_chapter07(registry);  // chapters 01 to 07 first
     registry.texture_layouts.add("linear", 8,
                                 "rows of texels one after another, as the image file stores them, with MIP levels "
                                 "and 8-bit texels where the file had them",

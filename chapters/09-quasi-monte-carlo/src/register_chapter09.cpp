@@ -1,6 +1,7 @@
 // Chapter 09's registrations: the stratified and Sobol samplers, and Sobol as the default
 // sampler of the per-pixel integrators from this chapter on.
 #include "freezeray/ch09/register_chapter09.hpp"
+#include "freezeray/ch08/register_chapter08.hpp"
 
 #include "freezeray/ch09/sobol_sampler.hpp"
 #include "freezeray/ch09/stratified_sampler.hpp"
@@ -9,6 +10,7 @@
 namespace freezeray {
 
 void register_chapter09(Registry& registry) {
+    register_chapter08(registry);  // chapters 01 to 08 first
     registry.samplers.add("stratified", 9,
                          "jittered: every 1D and 2D draw stratified over each block of 1, 1, 2, 4, 8, ... samples of a pixel",
                          [](const Parameters&) { return std::make_unique<ch09::StratifiedSampler>(); });

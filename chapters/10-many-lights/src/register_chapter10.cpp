@@ -1,5 +1,6 @@
 // Chapter 10's registrations.
 #include "freezeray/ch10/register_chapter10.hpp"
+#include "freezeray/ch09/register_chapter09.hpp"
 
 #include "freezeray/ch10/bvh_light_sampler.hpp"
 #include "freezeray/ch10/defensive_light_sampler.hpp"
@@ -7,6 +8,7 @@
 namespace freezeray {
 
 void register_chapter10(Registry& registry) {
+    register_chapter09(registry);  // chapters 01 to 09 first
     registry.light_samplers.add("bvh", 10,
                                "a light BVH walked from the shading point, each light in proportion to a bound on what it "
                                "can send there (Conty Estevez and Kulla 2018), with a defensive share of 0.2 of the choices "

@@ -11,7 +11,7 @@ namespace freezeray {
 // The last chapter of the course that this build contains.
 int last_chapter();
 
-// Whether chapter `number` is written and registered (07 and 08 are not yet, 09 is).
+// Whether chapter `number` is written and registered: every chapter up to the last.
 bool chapter_is_written(int number);
 
 // A registry for `program` with every written chapter up to last_chapter() registered.

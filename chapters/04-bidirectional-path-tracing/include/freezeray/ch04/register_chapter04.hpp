@@ -5,8 +5,8 @@
 
 namespace freezeray {
 
-// Registers chapter 04's integrators ("light-tracing", "bdpt", "bdpt-balance"). Call after
-// register_chapter03.
+// Registers chapter 04's integrators ("light-tracing", "bdpt", "bdpt-balance").
+// Chapters 01 to 03 are registered first.
 void register_chapter04(Registry& registry);
 
 }  // namespace freezeray

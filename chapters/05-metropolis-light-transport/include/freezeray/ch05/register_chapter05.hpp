@@ -5,7 +5,9 @@
 
 namespace freezeray {
 
-// Registers chapter 05's integrator ("mlt"). Call after register_chapter04.
+// Registers chapter 05's integrators ("mlt", "mlt-multiplexed", "auto") and its rule for
+// advising mlt.
+// Chapters 01 to 04 are registered first.
 void register_chapter05(Registry& registry);
 
 }  // namespace freezeray

@@ -5,7 +5,8 @@
 
 namespace freezeray {
 
-// Registers chapter 06's accelerator ("kdtree"). Call after register_chapter05.
+// Registers chapter 06's accelerator ("kdtree").
+// Chapters 01 to 05 are registered first.
 void register_chapter06(Registry& registry);
 
 }  // namespace freezeray

@@ -6,7 +6,7 @@
 namespace freezeray {
 
 // Registers chapter 09's samplers ("stratified", "sobol") and makes sobol the default sampler.
-// Call after the registrations of the chapters before it.
+// Chapters 01 to 08 are registered first.
 void register_chapter09(Registry& registry);
 
 }  // namespace freezeray
