@@ -8,6 +8,7 @@ const std::vector<CatalogueEntry>& course_catalogue() {
         {CapabilityKind::Integrator, "pt-naive", 1},
         {CapabilityKind::Material, "diffuse", 1},
         {CapabilityKind::Accelerator, "bruteforce", 1},
+        {CapabilityKind::Camera, "pinhole", 1},
         {CapabilityKind::Integrator, "pt-is", 2},
         {CapabilityKind::Material, "mirror", 2},
         {CapabilityKind::Material, "conductor", 2},

@@ -66,7 +66,7 @@ TEST_CASE("ch04/camera-connection", "[exercise]") {
     // beta (rho / pi) |cos theta_vertex| We / pdf, with We = 1 / (A cos^4 theta_camera) and
     // pdf = d^2 / cos theta_camera (the shading normal is the geometric one: no correction).
     const Scene scene = load_cornell_box();
-    const PinholeCamera& camera = *scene.camera;
+    const auto& camera = dynamic_cast<const PinholeCamera&>(*scene.camera);  // the Cornell box's camera
     const Vec2 film(0.2f * static_cast<float>(camera.width()), 0.7f * static_cast<float>(camera.height()));
     const std::optional<Hit> hit = scene.intersect(camera.generate_ray(film));
     REQUIRE(hit.has_value());

@@ -108,7 +108,7 @@ inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinit
 // and uv per vertex when present, unit normals, a usable camera and accelerator.
 inline void check_scene(const Scene& scene) {
     require_invariant(!scene.meshes.empty(), "a loaded scene has a mesh");
-    require_invariant(scene.camera.has_value() && scene.accelerator != nullptr, "camera and accelerator exist");
+    require_invariant(scene.camera != nullptr && scene.accelerator != nullptr, "camera and accelerator exist");
     require_invariant(scene.camera_description.width >= 1 && scene.camera_description.height >= 1,
                       "the resolution is positive");
     for (const TriangleMesh& mesh : scene.meshes) {

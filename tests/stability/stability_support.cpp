@@ -102,7 +102,7 @@ void check_valid(const RenderResult& result, const std::string& what) {
 }
 
 std::vector<int> pixel_coverage(const Scene& scene) {
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     const float offsets[5] = {0.0f, 0.25f, 0.5f, 0.75f, 0.9999f};
     std::vector<int> coverage(static_cast<std::size_t>(camera.width()) * camera.height());
     for (int y = 0; y < camera.height(); ++y) {

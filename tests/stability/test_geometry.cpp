@@ -66,7 +66,7 @@ TEST_CASE("grazing incidence: camera and light at cos theta 1e-4 to a plane of e
 TEST_CASE("the grazing camera rays really meet the plane at cos theta between 5e-5 and 3e-4", "[stability][geometry]") {
     // Guards the scene: the case stresses grazing angles only if its rays are grazing.
     const Scene scene = load("grazing/scene.json");
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     float smallest = 1.0f, largest = 0.0f;
     int plane_hits = 0;
     for (int y = 0; y < camera.height(); ++y) {

@@ -113,7 +113,7 @@ TEST_CASE("inside a glass block, escaping directions see 1.5^2 and trapped ones 
     // reflection approaches 1 and paths grow long, away); pixels all of whose sub-rays have
     // x^2 + y^2 > 1 are 0 (each path reflects totally until Russian roulette ends it).
     const Scene scene = load("glass-block/scene.json");
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     PixelGroup escaping{"escaping pixels", {}};
     std::vector<std::size_t> trapped;
     const float offsets[5] = {0.0f, 0.25f, 0.5f, 0.75f, 0.9999f};

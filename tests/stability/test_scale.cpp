@@ -30,7 +30,7 @@ struct SelfIntersections {
 SelfIntersections count_self_intersections(const Scene& scene) {
     SelfIntersections counts;
     PCG32 random(77, 3);
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     auto spawn_from = [&](const Hit& hit, const Vec3& direction) -> std::optional<Hit> {
         ++counts.spawned;
         const std::optional<Hit> next = scene.intersect(hit.spawn_ray(direction));

@@ -11,7 +11,7 @@ using namespace freezeray::ch04;
 
 namespace {
 
-PinholeCamera make_camera(int width, int height, float fov) {
+ImportancePinholeCamera make_camera(int width, int height, float fov) {
     CameraDescription d;
     d.position = Vec3(0.5f, -1.0f, 2.0f);
     d.look_at = Vec3(1.5f, 0.0f, 5.0f);
@@ -19,7 +19,7 @@ PinholeCamera make_camera(int width, int height, float fov) {
     d.fov_vertical_degrees = fov;
     d.width = width;
     d.height = height;
-    return PinholeCamera(d);
+    return ImportancePinholeCamera(d);
 }
 
 }  // namespace
@@ -31,7 +31,7 @@ TEST_CASE("the camera's importance We cos(theta) integrates to 1 over the sphere
     // d(omega) = d(cos theta) d(phi): the closed form says exactly 1 (We cos dw = dA / A on the
     // image plane). The film's edges cut cells, an error below 1e-3 at this resolution.
     for (const auto& [width, height, fov] : {std::tuple{64, 48, 40.0f}, std::tuple{30, 90, 75.0f}}) {
-        const PinholeCamera camera = make_camera(width, height, fov);
+        const ImportancePinholeCamera camera = make_camera(width, height, fov);
         const Frame frame(camera.forward());
         constexpr int bands = 3000, sectors = 6000;
         double importance = 0.0, pdf = 0.0;
@@ -43,8 +43,8 @@ TEST_CASE("the camera's importance We cos(theta) integrates to 1 over the sphere
                 const Vec3 local(static_cast<float>(sin_theta * std::cos(phi)), static_cast<float>(sin_theta * std::sin(phi)),
                                  static_cast<float>(cos_theta));
                 const Vec3 direction = glm::normalize(frame.to_world(local));
-                importance += camera_importance(camera, Ray{camera.position(), direction}) * cos_theta;
-                pdf += camera_pdf_direction(camera, direction);
+                importance += camera.importance(Ray{camera.position(), direction}) * cos_theta;
+                pdf += camera.pdf_direction(Ray{camera.position(), direction});
             }
         }
         const double cell = (1.0 / bands) * (2.0 * Pi / sectors);
@@ -52,19 +52,19 @@ TEST_CASE("the camera's importance We cos(theta) integrates to 1 over the sphere
         CHECK(importance * cell == Approx(1.0).margin(2e-3));
         CHECK(pdf * cell == Approx(1.0).margin(2e-3));
         // At the centre of the film theta = 0: We = 1 / A.
-        CHECK(camera_importance(camera, Ray{camera.position(), camera.forward()}) == Approx(1.0f / camera.image_plane_area()));
+        CHECK(camera.importance(Ray{camera.position(), camera.forward()}) == Approx(1.0f / camera.image_plane_area()));
     }
 }
 
 TEST_CASE("sample_wi finds the raster position generate_ray came from, with pdf distance^2 / cos(theta)",
           "[unit][camera][ch04]") {
-    const PinholeCamera camera = make_camera(64, 48, 50.0f);
+    const ImportancePinholeCamera camera = make_camera(64, 48, 50.0f);
     for (int i = 0; i < 200; ++i) {
         const Vec2 film(0.3f + 63.4f * static_cast<float>((i * 37) % 200) / 200.0f,
                         0.2f + 47.6f * static_cast<float>((i * 53) % 200) / 200.0f);
         const Ray ray = camera.generate_ray(film);
         const float t = 0.5f + 0.1f * static_cast<float>(i);
-        const std::optional<CameraImportanceSample> sample = sample_camera_wi(camera, ray.at(t));
+        const std::optional<CameraImportanceSample> sample = camera.sample_wi(ray.at(t), Vec2(0.5f));
         REQUIRE(sample);
         CHECK(sample->raster_position.x == Approx(film.x).margin(2e-3));
         CHECK(sample->raster_position.y == Approx(film.y).margin(2e-3));
@@ -72,13 +72,13 @@ TEST_CASE("sample_wi finds the raster position generate_ray came from, with pdf 
         CHECK(sample->distance == Approx(t).epsilon(1e-4));
         const float cos_theta = glm::dot(ray.direction, camera.forward());
         CHECK(sample->pdf == Approx(t * t / cos_theta).epsilon(1e-4));
-        CHECK(sample->importance == Approx(camera_importance(camera, ray)).epsilon(1e-4));
-        CHECK(camera_pdf_direction(camera, ray.direction) == Approx(1.0f / (camera.image_plane_area() * std::pow(cos_theta, 3.0f))).epsilon(1e-4));
+        CHECK(sample->importance == Approx(camera.importance(ray)).epsilon(1e-4));
+        CHECK(camera.pdf_direction(ray) == Approx(1.0f / (camera.image_plane_area() * std::pow(cos_theta, 3.0f))).epsilon(1e-4));
     }
     // Behind the camera, and in front but outside the film: nothing, and no importance.
-    CHECK_FALSE(sample_camera_wi(camera, camera.position() - camera.forward()));
+    CHECK_FALSE(camera.sample_wi(camera.position() - camera.forward(), Vec2(0.5f)));
     const Ray outside{camera.position(), glm::normalize(camera.forward() + 3.0f * Vec3(0, 1, 0))};
-    CHECK_FALSE(sample_camera_wi(camera, outside.at(2.0f)));
-    CHECK(camera_importance(camera, outside) == 0.0f);
-    CHECK_FALSE(sample_camera_wi(camera, camera.position()));
+    CHECK_FALSE(camera.sample_wi(outside.at(2.0f), Vec2(0.5f)));
+    CHECK(camera.importance(outside) == 0.0f);
+    CHECK_FALSE(camera.sample_wi(camera.position(), Vec2(0.5f)));
 }

@@ -5,7 +5,7 @@
 // Deterministic: no statistical test in this file.
 #include "freezeray/ch02/cosine_lambertian.hpp"
 #include "freezeray/ch03/area_light.hpp"
-#include "freezeray/ch03/light_sampler.hpp"
+#include "freezeray/ch03/fixed_light_sampler.hpp"
 #include "freezeray/ch03/mis.hpp"
 #include "freezeray/ch03/point_light.hpp"
 #include "freezeray/ch03/spot_light.hpp"

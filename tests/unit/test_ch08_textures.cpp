@@ -8,7 +8,7 @@
 
 #include "freezeray/ch01/register_chapter01.hpp"
 #include "freezeray/ch02/register_chapter02.hpp"
-#include "freezeray/ch02/texture_storage.hpp"
+#include "freezeray/ch02/linear_layout.hpp"
 #include "freezeray/ch03/register_chapter03.hpp"
 #include "freezeray/ch04/register_chapter04.hpp"
 #include "freezeray/ch05/register_chapter05.hpp"
@@ -23,7 +23,7 @@
 #include "freezeray/random.hpp"
 #include "freezeray/scene.hpp"
 #include "freezeray/scene_loader.hpp"
-#include "freezeray/texture_footprint.hpp"
+#include "freezeray/ch08/texture_footprint.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -337,7 +337,7 @@ TEST_CASE("ch08: hits carry the footprint only when a texture layout filters by 
     // material-spheres' floor is textured; its camera's central ray meets a sphere or the floor,
     // so look down a column of the image for the first textured hit.
     auto first_textured_hit = [](const Scene& scene) -> std::optional<Hit> {
-        const PinholeCamera& camera = *scene.camera;
+        const Camera& camera = *scene.camera;
         for (int y = camera.height() - 1; y >= 0; --y) {
             const std::optional<Hit> hit = scene.intersect(camera.generate_ray(Vec2(camera.width() / 2 + 0.5f, y + 0.5f)));
             if (hit && scene.material(*hit).is_textured()) return hit;
@@ -347,7 +347,7 @@ TEST_CASE("ch08: hits carry the footprint only when a texture layout filters by 
     const std::string path = scene_path("material-spheres/scene.json");
     // The complete renderer's default: trilinear, which reads the footprint.
     const Scene trilinear = load_scene(path, full_registry());
-    REQUIRE(trilinear.texture_footprints);
+    REQUIRE(trilinear.texture_footprint != nullptr);
     const std::optional<Hit> with = first_textured_hit(trilinear);
     REQUIRE(with);
     CHECK(glm::length(with->duv_dx) > 0.0f);
@@ -358,7 +358,7 @@ TEST_CASE("ch08: hits carry the footprint only when a texture layout filters by 
     Registry chapter07("ch07", 7);
     register_chapter07(chapter07);
     for (const Scene& scene : {load_scene(path, full_registry(), bilinear_options), load_scene(path, chapter07)}) {
-        CHECK_FALSE(scene.texture_footprints);
+        CHECK(scene.texture_footprint == nullptr);
         const std::optional<Hit> without = first_textured_hit(scene);
         REQUIRE(without);
         CHECK(without->duv_dx == Vec2(0.0f));

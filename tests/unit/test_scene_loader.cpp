@@ -210,7 +210,7 @@ TEST_CASE("the work per ray that info lists is what the scene calls for", "[unit
     const Scene cornell = load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry());
     CHECK(cornell.environment == nullptr);
     CHECK_FALSE(cornell.has_alpha_masks);
-    CHECK_FALSE(cornell.texture_footprints);
+    CHECK(cornell.texture_footprint == nullptr);
     const std::string cornell_work = describe_work_per_ray(cornell);
     CHECK(cornell_work.find("[x]") == std::string::npos);
     CHECK_THAT(cornell_work, Catch::Contains("[ ] environment lookup") && Catch::Contains("[ ] alpha-mask test") &&

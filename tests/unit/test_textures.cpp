@@ -2,7 +2,7 @@
 // colour maps and raw values of data maps, and reading each file once.
 #include "freezeray/ch02/image_texture.hpp"
 #include "freezeray/ch02/texture.hpp"
-#include "freezeray/ch02/texture_storage.hpp"
+#include "freezeray/ch02/linear_layout.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/random.hpp"

@@ -5,7 +5,7 @@
 #include "freezeray/ch02/alpha_mask.hpp"
 #include "freezeray/ch02/materials.hpp"
 #include "freezeray/ch02/path_tracer.hpp"
-#include "freezeray/ch02/texture_storage.hpp"
+#include "freezeray/ch02/linear_layout.hpp"
 #include "freezeray/error.hpp"
 #include "freezeray/scene.hpp"
 
@@ -73,8 +73,9 @@ void register_chapter02(Registry& registry) {
         });
     registry.texture_layouts.add("linear", 2, "rows of texels one after another, as the image file stores them",
                                 [](const Parameters&) -> TextureStorageMaker {
+                                    // Looked up at the point: no footprint.
                                     return {[](const Image& image) { return std::make_shared<ch02::LinearTextureStorage>(image); },
-                                            false};
+                                            nullptr};
                                 });
     registry.integrators.add("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
                             [](const RenderSettings& settings, const Parameters&) {

@@ -34,10 +34,10 @@ StrategyContribution connect_strategy(const Scene& scene, const ch03::FixedLight
         const PathVertex& qs = light[s - 1];
         if (!qs.connectible()) return result;
         if (s == 1 && qs.light->type() != LightType::Area) return result;  // see the chapter's README
-        const std::optional<CameraImportanceSample> camera_sample = sample_camera_wi(*scene.camera, qs.position);
+        const std::optional<CameraImportanceSample> camera_sample = scene.camera->sample_wi(qs.position, Vec2(0.5f));
         if (!camera_sample || camera_sample->pdf <= 0.0f || camera_sample->importance <= 0.0f) return result;
         sampled.type = VertexType::Camera;
-        sampled.position = scene.camera->position();
+        sampled.position = camera_sample->position;
         sampled.beta = Spectrum(camera_sample->importance / camera_sample->pdf);
         if (s == 1) {
             // The light seen directly: a one-sided Lambertian emitter sends Le towards the camera.
@@ -123,7 +123,7 @@ void bidirectional_sample(const Scene& scene, const ch03::FixedLightSampler& lig
 // BOOK(bdpt-render)
 RenderResult BidirectionalPathTracer::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
     const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
-    const PinholeCamera& pinhole = *scene.camera;
+    const Camera& pinhole = *scene.camera;
     const StrategyLayers layers(settings_.max_depth);
     const bool strategy_images = !settings_.strategy_images_folder.empty();
 

@@ -31,7 +31,7 @@ RenderResult render_light_paths(const Scene& scene, const RenderSettings& settin
         throw InputError("--resume", "a splatting render (light tracing) cannot be resumed: its film keeps sums of "
                                      "splats, not per-pixel samples to go on from; render more samples with another "
                                      "--seed or --sample-offset and `merge` the two");
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     const int width = camera.width();
     const int height = camera.height();
     const auto slots = static_cast<std::uint32_t>(width * height);

@@ -29,7 +29,8 @@ float adjoint_sample_factor(const BSDFSample& sample, const Vec3& wo, const Vec3
 // BOOK(connect-to-camera)
 std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit& hit, const BSDF& bsdf, const Frame& frame,
                                                   const Vec3& wo_world, const Spectrum& beta) {
-    const std::optional<CameraImportanceSample> camera = sample_camera_wi(*scene.camera, hit.position);
+    // The pinhole draws no number (a lens would: chapter 16).
+    const std::optional<CameraImportanceSample> camera = scene.camera->sample_wi(hit.position, Vec2(0.5f));
     if (!camera || camera->pdf <= 0.0f || camera->importance <= 0.0f) return std::nullopt;
     // The light arrives from wo_world and leaves towards the camera: in the radiance convention
     // of chapter 02's BSDFs that is f(wo = towards the camera, wi = towards the light). That is
@@ -40,7 +41,7 @@ std::optional<CameraConnection> connect_to_camera(const Scene& scene, const Hit&
     const Vec3 to_camera = frame.to_local(camera->wi);
     const Spectrum f = bsdf.eval(to_camera, frame.to_local(wo_world));
     if (is_black(f)) return std::nullopt;
-    if (scene.occluded(hit.spawn_ray_to(scene.camera->position()))) return std::nullopt;
+    if (scene.occluded(hit.spawn_ray_to(camera->position))) return std::nullopt;
     const float correction = shading_normal_correction(wo_world, camera->wi, frame.n, hit.geometric_normal);
     // EXERCISE(ch04/camera-connection): the contribution of connecting a light subpath vertex to the camera, and where on the film it lands, book chapter 04, "Light tracing" (the camera's importance, the cosine at the vertex, the shading-normal correction, the densities)
     // beta f |cos theta| We / pdf: pdf = distance^2 / cos(theta_camera) turns the pinhole's
@@ -57,14 +58,14 @@ Vec3 emission_origin_error(const Vec3& point) { return glm::abs(point) * 0x1p-18
 std::optional<CameraConnection> connect_light_to_camera(const Scene& scene, const LightEmissionSample& emission,
                                                         float light_probability) {
     const Vec3& point = emission.ray.origin;
-    const std::optional<CameraImportanceSample> camera = sample_camera_wi(*scene.camera, point);
+    const std::optional<CameraImportanceSample> camera = scene.camera->sample_wi(point, Vec2(0.5f));
     if (!camera || camera->pdf <= 0.0f || camera->importance <= 0.0f) return std::nullopt;
     // An area light is a one-sided Lambertian emitter: the same radiance towards the camera as
     // along the sampled ray, if the camera is in front of it.
     const float cos_light = glm::dot(emission.normal, camera->wi);
     if (cos_light <= 0.0f) return std::nullopt;
     const Vec3 origin = offset_ray_origin(point, emission_origin_error(point), emission.normal, camera->wi);
-    const float distance = glm::length(scene.camera->position() - origin);
+    const float distance = glm::length(camera->position - origin);
     if (scene.occluded(Ray{origin, camera->wi, distance * (1.0f - 1e-4f)})) return std::nullopt;
     // Le cos(theta_light) We / (P(light) p_A(point) p(camera)): the emission of the chosen point
     // carried to the pinhole (the s = 1, t = 1 strategy; Veach 1997, section 10.2).

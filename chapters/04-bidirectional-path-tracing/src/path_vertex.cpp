@@ -80,7 +80,7 @@ float vertex_pdf(const Scene& scene, const PathVertex& v, const PathVertex* prev
     if (wn == Vec3(0.0f)) return 0.0f;
     float pdf = 0.0f;
     if (v.type == VertexType::Camera) {
-        pdf = camera_pdf_direction(*scene.camera, wn);
+        pdf = scene.camera->pdf_direction(Ray{v.position, wn});
     } else {
         if (previous == nullptr) return 0.0f;
         const Vec3 wp = separation(v, *previous).direction;

@@ -3,6 +3,7 @@
 #include "freezeray/ch03/register_chapter03.hpp"
 
 #include "freezeray/ch04/bidirectional_path_tracer.hpp"
+#include "freezeray/ch04/camera_importance.hpp"
 #include "freezeray/ch04/light_tracer.hpp"
 #include "freezeray/scene.hpp"
 
@@ -10,6 +11,11 @@ namespace freezeray {
 
 void register_chapter04(Registry& registry) {
     register_chapter03(registry);  // chapters 01 to 03 first
+    // The pinhole again, now with its importance (camera_importance.hpp): light paths connect to it.
+    registry.cameras.add("pinhole", 4, "a pinhole with its importance, which light paths connect to",
+                         [](const CameraDescription& description, const Parameters&) {
+                             return std::make_unique<ch04::ImportancePinholeCamera>(description);
+                         });
     registry.add_option({"--bdpt-strategies", "bdpt_strategies", OptionType::Text, OptionTarget::Integrator,
                          "write each strategy's image, weighted and unweighted, and their grids into this folder "
                          "(bidirectional path tracing)",

@@ -105,7 +105,7 @@ int camera_subpath(const Scene& scene, const Ray& camera_ray, SampleStream& samp
     camera.type = VertexType::Camera;
     camera.beta = Spectrum(1.0f);  // We / pdf = 1 for a pixel's rays: the box filter
     camera.position = camera_ray.origin;
-    const float pdf_direction = camera_pdf_direction(*scene.camera, camera_ray.direction);
+    const float pdf_direction = scene.camera->pdf_direction(camera_ray);
     return 1 + random_walk(scene, camera_ray, samples, arena, Spectrum(1.0f), Spectrum(1.0f), pdf_direction,
                            max_vertices - 1, Transport::Radiance, path + 1);
 }

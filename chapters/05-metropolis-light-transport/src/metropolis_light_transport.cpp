@@ -60,7 +60,7 @@ Vec2 start_path(const Scene& scene, PrimarySamples& samples, ScratchArena& arena
     arena.reset();
     // The film position is part of the state: a chain moves over the whole image.
     samples.start_stream(ch04::CameraStream);
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     return Vec2(samples.next_float() * static_cast<float>(camera.width()),
                 samples.next_float() * static_cast<float>(camera.height()));
 }
@@ -160,7 +160,7 @@ RenderResult MetropolisLightTransport::render(const Scene& scene, const RenderSe
 
     const ch03::FixedLightSampler lights(scene.lights, ch03::LightSelection::Power);
     const ch04::BidirectionalSettings bidirectional{mlt.max_depth, ch03::MisHeuristic::Power, ""};
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     const int width = camera.width(), height = camera.height();
     const auto pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
     const int threads = resolve_thread_count(settings.threads);

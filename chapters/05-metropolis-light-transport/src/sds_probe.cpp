@@ -90,7 +90,7 @@ struct ProbeResult {
 // share of that light; else nothing. Where that share is not 0, the camera strategy's tries.
 ProbeResult probe(const Scene& scene, const LightSampler* lights, const SdsProbeSettings& settings,
                   std::uint64_t tries, PCG32& random, ScratchArena& arena, ScratchArena& tries_arena) {
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     const Ray camera_ray = camera.generate_ray({random.next_float() * static_cast<float>(camera.width()),
                                                 random.next_float() * static_cast<float>(camera.height())});
     arena.reset();

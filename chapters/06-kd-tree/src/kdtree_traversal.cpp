@@ -2,7 +2,7 @@
 // those of brute force: the same
 // watertight triangle test (Woop, Benthin and Wald 2013) on the same floats, cells found by a
 // beam as wide as that test's rounding, and among hits an ulp apart brute force's own choice.
-#include "freezeray/ch06/close_hits.hpp"
+#include "freezeray/close_hits.hpp"
 #include "freezeray/ch06/kdtree_accelerator.hpp"
 #include "freezeray/ch06/kdtree_traversal.hpp"
 
@@ -59,8 +59,9 @@ std::optional<Hit> KdTreeAccelerator::closest_hit(const Ray& ray, Counter& count
 std::optional<Hit> KdTreeAccelerator::brute_force_answer(const Ray& ray, const Walk& walk, const RayShear& shear,
                                                          CloseHits& close) const {
     if (close.empty()) return std::nullopt;
-    const auto choice =
-        close.brute_force_choice(ray, walk.inverse_direction, shear, vertices_, ids_, brute_force_.mesh_bounds());
+    const auto choice = close.brute_force_choice(
+        ray, walk.inverse_direction, shear, brute_force_.mesh_bounds(), [&](std::uint32_t t) { return ids_[t].mesh; },
+        [&](std::uint32_t t) -> const TriangleVertices& { return vertices_[t]; });
     if (!choice) return brute_force_.intersect(ray);  // its box test culled them all: its own answer
     const TriangleId& id = ids_[choice->triangle];
     return make_hit(*meshes_, id.mesh, id.triangle, choice->hit);

@@ -3,7 +3,7 @@
 // of the hits brute force would report.
 #include "freezeray/ch07/kdtree_simd_accelerator.hpp"
 
-#include "freezeray/ch06/close_hits.hpp"
+#include "freezeray/close_hits.hpp"
 #include "freezeray/ch06/kdtree_traversal.hpp"
 #include "freezeray/triangle_intersection.hpp"
 
@@ -78,7 +78,7 @@ std::optional<Hit> KdTreeSimdAccelerator::closest_hit(const Ray& ray, Counter& c
     const RayShear shear(ray.direction);
     PacketRay packet_ray = make_packet_ray(ray, shear);
     Ray test = ray;  // its tmax shrinks to just beyond the closest hit so far
-    ch06::CloseHits close;
+    CloseHits close;
     ch06::traverse(packets_.tree(), ray, *walk, counter, [&](const ch06::KdTreeNode& leaf) {
         for_each_hit_in_leaf(packets_, kernel_->test, scalar_.triangle_vertices(), leaf, test, shear, packet_ray, counter,
                              [&](std::uint32_t triangle, const TriangleHit& hit) {

@@ -19,6 +19,7 @@
 // panel per configuration side by side: the picture of what a layout wastes.
 #include "cache_model.hpp"
 #include "freezeray/ch08/mip_mapped_storage.hpp"
+#include "freezeray/ch08/texture_footprint.hpp"
 #include "freezeray/ch08/texture_layout_settings.hpp"
 #include "freezeray/complete_renderer.hpp"
 #include "freezeray/error.hpp"
@@ -143,7 +144,7 @@ private:
 // 16 x 16 pixel tiles, with recording on: the materials build their BSDFs, which look their
 // textures up.
 void record_lookups(const Scene& scene, int spp, Recording& recording) {
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     PCG32 random(1, 1);
     ScratchArena arena;
     const int tiles_per_row = (camera.width() + PixelTileSize - 1) / PixelTileSize;
@@ -292,7 +293,7 @@ int main(int argc, char** argv) {
                                         return {[&recording](const Image& image) {
                                                     return std::make_shared<RecordingStorage>(image, recording);
                                                 },
-                                                true};
+                                                &ch08::add_texture_footprint};
                                     });
         SceneLoadOptions options;
         options.options.values["layout"] = "recording";

@@ -4,6 +4,7 @@
 #include "freezeray/ch07/register_chapter07.hpp"
 
 #include "freezeray/ch08/mip_mapped_storage.hpp"
+#include "freezeray/ch08/texture_footprint.hpp"
 #include "freezeray/ch08/texture_layout_settings.hpp"
 
 namespace freezeray {
@@ -16,7 +17,7 @@ TextureLayoutFactory layout_factory(MakeStorage make) {
     return [make](const Parameters& parameters) -> TextureStorageMaker {
         const ch08::TextureLayoutSettings settings = ch08::read_texture_layout_settings(parameters);
         return {[make, settings](const Image& image) { return make(image, settings); },
-                settings.filter == ch08::TextureFilter::Trilinear};
+                settings.filter == ch08::TextureFilter::Trilinear ? &ch08::add_texture_footprint : nullptr};
     };
 }
 

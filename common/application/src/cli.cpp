@@ -39,7 +39,7 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     std::cout << "scene:      " << scene_path << "\n"
               << "meshes:     " << scene.meshes.size() << " (" << scene.triangle_count() << " triangles)\n"
               << "emitters:   " << scene.emissive_triangles.size() << " emissive triangles\n"
-              << "camera:     pinhole at (" << c.position.x << ", " << c.position.y << ", " << c.position.z
+              << "camera:     " << scene.camera_type << " at (" << c.position.x << ", " << c.position.y << ", " << c.position.z
               << "), vertical fov " << c.fov_vertical_degrees << " degrees, " << c.width << "x" << c.height << "\n"
               << "bounds:     (" << scene.bounds.min.x << ", " << scene.bounds.min.y << ", " << scene.bounds.min.z
               << ") to (" << scene.bounds.max.x << ", " << scene.bounds.max.y << ", " << scene.bounds.max.z << ")\n"
@@ -62,7 +62,8 @@ int run_info(const std::string& scene_path, const Registry& registry) {
         std::cout << "; the " << scene.emissive_triangles.size()
                   << " emissive triangles become area lights from chapter 03 on, which samples them";
     std::cout << "\n";
-    // How pt-nee and pt-mis choose lights here (chapters 03 and 10), built as a render builds it.
+    // How the integrators that sample lights choose them here (chapters 03 and 10), built as a
+    // render builds it.
     const std::string light_sampler = light_sampler_name("", scene, registry);
     std::unique_ptr<LightSampler> sampler;
     if (!light_sampler.empty() && !scene.lights.empty()) {
@@ -109,7 +110,7 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
     for (const std::string& c : crops) request.crops.push_back(parse_crop(c));
     const Comparison comparison = run_comparison(request, registry);
     write_comparison_report(comparison, request.out_folder);
-    int name_width = 12;  // the runs' names in one column, however long ("pt-mis@stratified")
+    int name_width = 12;  // the runs' names in one column, however long ("INTEGRATOR@SAMPLER")
     for (const IntegratorRun& run : comparison.runs) name_width = std::max(name_width, static_cast<int>(run.integrator.size()));
     for (const IntegratorRun& run : comparison.runs) {
         char slope[48] = "no fit";
@@ -184,7 +185,7 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
         light_samplers += (light_samplers.empty() ? "" : ", ") + e.name;
     if (!light_samplers.empty())
         render_command->add_option("--light-sampler", render.light_sampler,
-                                   "how pt-nee and pt-mis choose the light to sample at a shading point, one of: " +
+                                   "how the integrators that sample lights choose one at a shading point, one of: " +
                                        light_samplers + " (default: the scene's, else " + registry.light_samplers.default_name() + ")");
     render_command->add_option("--threads", render.threads, "threads (default: every core)");
     render_command->add_option("--seed", render.seed, "random seed (default: the scene's)");
@@ -238,12 +239,12 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
                      "with --make-reference: stop when the reference's estimated relMSE falls below this (--time, --spp cap it)")
         ->check(CLI::PositiveNumber);
     compare_command->add_option("--sampler", compare.sampler,
-                                "the runs' sampler, one of: " + samplers + " (a run may name its own: pt-mis@sobol; default: the scene's, else " +
+                                "the runs' sampler, one of: " + samplers + " (a run may name its own: INTEGRATOR@SAMPLER; default: the scene's, else " +
                                     registry.samplers.default_name() + ")");
     if (!light_samplers.empty())
         compare_command->add_option("--light-sampler", compare.light_sampler,
                                     "the runs' light sampler, one of: " + light_samplers +
-                                        " (a run may name its own: pt-mis@bvh; default: the scene's, else " +
+                                        " (a run may name its own: INTEGRATOR@LIGHT_SAMPLER; default: the scene's, else " +
                                         registry.light_samplers.default_name() + ")");
     compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
     compare_command->add_option("--seed", compare.seed,

@@ -25,12 +25,12 @@ namespace freezeray {
 std::string unreachable_lights_warning(const Scene& scene, const Integrator& integrator, const std::string& name) {
     if (!scene.effects.delta_lights || integrator.samples_lights()) return "";
     return name + " finds light only by hitting it; the scene's point, spot and directional lights cannot be hit "
-                  "and stay black (pt-nee and pt-mis sample them)";
+                  "and stay black (an integrator that samples lights renders them: `info` suggests one)";
 }
 
 RunName parse_run_name(const std::string& run, const Registry& registry) {
-    const std::string usage = "'" + run + "': write INTEGRATOR, INTEGRATOR@SAMPLER (pt-mis@sobol), INTEGRATOR@LIGHT_SAMPLER "
-                              "(pt-mis@bvh) or both (pt-mis@sobol@bvh)";
+    const std::string usage = "'" + run + "': write INTEGRATOR, INTEGRATOR@SAMPLER, INTEGRATOR@LIGHT_SAMPLER or "
+                              "INTEGRATOR@SAMPLER@LIGHT_SAMPLER";
     RunName name;
     std::size_t at = run.find('@');
     name.integrator = run.substr(0, at);
@@ -61,8 +61,8 @@ SamplerChoice choose_sampler(const std::string& requested, const std::string& wh
     if (!integrator.draws_from_sampler() && name != "independent") {
         if (named)
             throw InputError(at, integrator_name + " draws its numbers from its own streams (light paths, Markov chains), "
-                                 "not from a sampler: only the per-pixel integrators and bdpt, whose samples "
-                                 "belong to pixels, take --sampler " + name);
+                                 "not from a sampler: only the integrators whose samples belong to pixels take "
+                                 "--sampler " + name);
         name = "independent";
     }
     return {name, registry.samplers.make(name, at, Parameters::none())};
@@ -79,8 +79,9 @@ LightSamplerChoice choose_light_sampler(const std::string& requested, const std:
     const std::string at = !requested.empty() ? where : scene.file + ": /render/light_sampler";
     if (!integrator.chooses_lights_per_point()) {
         if (!requested.empty())
-            throw InputError(at, integrator_name + " does not choose lights through a light sampler (pt-nee and pt-mis do; "
-                                 "light paths and bidirectional strategies choose by power everywhere)");
+            throw InputError(at, integrator_name + " does not choose lights through a light sampler (only the integrators "
+                                 "that sample a light at each shading point do; light paths and bidirectional "
+                                 "strategies choose by power everywhere)");
         return {};  // a scene's default applies to the integrators that read it
     }
     const std::string name = light_sampler_name(requested, scene, registry);
@@ -305,7 +306,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     }
     if (!options.quiet) {
         // The estimate comes from the per-pixel variance, which assumes independent samples; an
-        // image that is no estimate of light (traversal-cost) has none.
+        // image that is no estimate of light (chapter 06's traversal work) has none.
         std::string estimate = "no error estimate";
         if (result.estimated_relative_mse >= 0.0) {
             char text[64];

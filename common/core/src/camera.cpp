@@ -1,17 +1,32 @@
-// The pinhole camera.
+// The camera's frame, and the pinhole camera.
 #include "freezeray/camera.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace freezeray {
 
-PinholeCamera::PinholeCamera(const CameraDescription& d)
-    : position_(d.position), width_(d.width), height_(d.height) {
+Camera::Camera(const CameraDescription& d) : position_(d.position), width_(d.width), height_(d.height) {
     forward_ = glm::normalize(d.look_at - d.position);
     // A right-handed frame: right = forward x up. Looking along +z with +y up, +x is on the
     // left of the image, as in the Cornell box's published data.
     right_ = glm::normalize(glm::cross(forward_, d.up));
     up_ = glm::cross(right_, forward_);
+}
+
+namespace {
+
+[[noreturn]] void no_importance() {
+    throw std::logic_error("this camera has no importance: the camera as a light-transport object is chapter 04's");
+}
+
+}  // namespace
+
+float Camera::importance(const Ray&) const { no_importance(); }
+float Camera::pdf_direction(const Ray&) const { no_importance(); }
+std::optional<CameraImportanceSample> Camera::sample_wi(const Vec3&, const Vec2&) const { no_importance(); }
+
+PinholeCamera::PinholeCamera(const CameraDescription& d) : Camera(d) {
     tan_half_fov_y_ = std::tan(glm::radians(d.fov_vertical_degrees) * 0.5f);
     aspect_ = static_cast<float>(d.width) / static_cast<float>(d.height);
 }

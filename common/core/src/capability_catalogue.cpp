@@ -21,6 +21,7 @@ const KindDescription& kind_description(CapabilityKind kind) {
         {CapabilityKind::TextureLayout, "texture layout", "--texture-layout", "textures", "layout"},
         {CapabilityKind::Sampler, "sampler", "--sampler", "render", "sampler"},
         {CapabilityKind::LightSampler, "light sampler", "--light-sampler", "render", "light_sampler"},
+        {CapabilityKind::Camera, "camera", "", "camera", "type"},
     };
     for (const KindDescription& k : kinds)
         if (k.kind == kind) return k;

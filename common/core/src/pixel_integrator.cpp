@@ -59,7 +59,7 @@ std::vector<std::unique_ptr<Sampler>> thread_samplers(const Sampler& prototype, 
 // BOOK(pixel-loop)
 RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, Progress& progress,
                            const RadianceEstimator& li) {
-    const PinholeCamera& camera = *scene.camera;
+    const Camera& camera = *scene.camera;
     const int width = camera.width();
     const int height = camera.height();
     const int threads = resolve_thread_count(settings.threads);

@@ -25,11 +25,16 @@ Registry::Registry(std::string program, int chapter)
       lights(CapabilityKind::Light, renderer_),
       texture_layouts(CapabilityKind::TextureLayout, renderer_),
       samplers(CapabilityKind::Sampler, renderer_),
-      light_samplers(CapabilityKind::LightSampler, renderer_) {
+      light_samplers(CapabilityKind::LightSampler, renderer_),
+      cameras(CapabilityKind::Camera, renderer_) {
     accelerators.add("bruteforce", 1, "every triangle of every mesh whose bounding box the ray meets",
                      [](const Parameters&) { return std::make_unique<BruteForceAccelerator>(); });
     samplers.add("independent", 1, "independent uniform numbers, one PCG32 stream per pixel sample",
                  [](const Parameters&) { return std::make_unique<IndependentSampler>(); });
+    cameras.add("pinhole", 1, "a pinhole: position, look_at, up, fov_vertical_degrees, resolution",
+                [](const CameraDescription& description, const Parameters&) {
+                    return std::make_unique<PinholeCamera>(description);
+                });
 }
 
 const CatalogueBase& Registry::catalogue(CapabilityKind kind) const {
@@ -41,6 +46,7 @@ const CatalogueBase& Registry::catalogue(CapabilityKind kind) const {
         case CapabilityKind::TextureLayout: return texture_layouts;
         case CapabilityKind::Sampler: return samplers;
         case CapabilityKind::LightSampler: return light_samplers;
+        case CapabilityKind::Camera: return cameras;
     }
     throw std::logic_error("a capability kind without a catalogue");
 }
@@ -67,10 +73,11 @@ TextureStorageMaker Registry::texture_storage_maker(const std::string& layout, c
     return texture_layouts.make(layout, where, settings != nullptr ? *settings : Parameters::none());
 }
 
-bool Registry::texture_layouts_use_footprint(const Parameters* settings) const {
+TextureFootprint Registry::texture_footprint(const Parameters* settings) const {
     for (const Entry& layout : texture_layouts.list())
-        if (texture_storage_maker(layout.name, layout.name, settings).uses_footprint) return true;
-    return false;
+        if (const TextureFootprint footprint = texture_storage_maker(layout.name, layout.name, settings).footprint)
+            return footprint;
+    return nullptr;
 }
 
 void Registry::add_option(OptionDeclaration option) {

@@ -56,8 +56,8 @@ std::string describe_work_per_ray(const Scene& scene) {
                                : "no alpha mask: queries go straight to the accelerator");
     line(scene.effects.textures, "texel reads for material parameters",
          scene.effects.textures ? "some parameter is textured" : "every parameter is a constant");
-    line(scene.texture_footprints, "the pixel's footprint in texture space at textured hits",
-         scene.texture_footprints ? "the texture layout filters over it"
+    line(scene.texture_footprint != nullptr, "the pixel's footprint in texture space at textured hits",
+         scene.texture_footprint != nullptr ? "the texture layout filters over it"
          : scene.effects.textures ? "the texture layout reads at the point"
                                   : "nothing is textured");
     return text;

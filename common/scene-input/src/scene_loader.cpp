@@ -72,7 +72,8 @@ nlohmann::json parse_json_file(const std::string& path) {
 
 bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-CameraDescription read_camera(const Parameters& p, std::vector<std::string>& warnings) {
+// What every camera states (the camera's own keys are its factory's to read).
+CameraDescription read_camera(const Parameters& p) {
     CameraDescription camera;
     camera.position = p.require_vec3("position");
     camera.look_at = p.require_vec3("look_at");
@@ -90,7 +91,7 @@ CameraDescription read_camera(const Parameters& p, std::vector<std::string>& war
         camera.width = static_cast<int>(w);
         camera.height = static_cast<int>(h);
     }
-    // The camera's frame must exist in single precision (PinholeCamera normalises these).
+    // The camera's frame must exist in single precision (Camera normalises these).
     const Vec3 forward = camera.look_at - camera.position;
     if (glm::length(forward) == 0.0f) throw InputError(p.where("look_at"), "equals the camera position");
     if (!is_finite(glm::normalize(forward)))
@@ -99,7 +100,6 @@ CameraDescription read_camera(const Parameters& p, std::vector<std::string>& war
     const Vec3 right = glm::cross(glm::normalize(forward), glm::normalize(camera.up));
     if (glm::length(right) == 0.0f || !is_finite(glm::normalize(right)))
         throw InputError(p.where("up"), "is parallel to the view direction");
-    for (std::string& w : p.unused_key_warnings()) warnings.push_back(std::move(w));
     return camera;
 }
 
@@ -224,10 +224,15 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
     top.get_string("description", "");
     top.get_int("chapter", 1);
 
-    scene.camera_description = read_camera(top.child("camera"), scene.warnings);
+    // The camera: the registered kind the block's "type" names, else the default (the pinhole).
+    const Parameters camera_block = top.child("camera");
+    scene.camera_description = read_camera(camera_block);
     if (options.width > 0) scene.camera_description.width = options.width;
     if (options.height > 0) scene.camera_description.height = options.height;
-    scene.camera.emplace(scene.camera_description);
+    scene.camera_type = camera_block.get_string("type", registry.cameras.default_name());
+    scene.camera = registry.cameras.make(scene.camera_type, camera_block.has("type") ? camera_block.where("type") : "camera",
+                                         scene.camera_description, camera_block);
+    for (std::string& w : camera_block.unused_key_warnings()) scene.warnings.push_back(std::move(w));
 
     // The layout image textures are stored in: the command line's, else the "textures" block's,
     // else the renderer's default (none before chapter 02, which has no image textures).
@@ -395,8 +400,8 @@ Scene load_scene(const std::string& path, const Registry& registry, const SceneL
         }
     }
     scene.effects = compute_scene_effects(scene);
-    scene.texture_footprints =
-        scene.effects.textures && scene.camera && registry.texture_layouts_use_footprint(&texture_settings);
+    scene.texture_footprint =
+        scene.effects.textures && scene.camera ? registry.texture_footprint(&texture_settings) : nullptr;
     return scene;
 }
 

@@ -14,13 +14,13 @@
 namespace freezeray {
 
 // The kinds of things the registry names.
-enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout, Sampler, LightSampler };
+enum class CapabilityKind { Integrator, Material, Accelerator, Light, TextureLayout, Sampler, LightSampler, Camera };
 // Every kind, in the order above: a loop over the registry's contents uses this list, so a new
 // kind cannot be forgotten there.
 inline constexpr CapabilityKind all_capability_kinds[] = {CapabilityKind::Integrator,   CapabilityKind::Material,
                                                          CapabilityKind::Accelerator,  CapabilityKind::Light,
                                                          CapabilityKind::TextureLayout, CapabilityKind::Sampler,
-                                                         CapabilityKind::LightSampler};
+                                                         CapabilityKind::LightSampler, CapabilityKind::Camera};
 
 // What a kind declares once: its name, and how a render chooses one of it: the command line's
 // selector, else the key in the scene file's block that names it, else the catalogue's default.

@@ -97,15 +97,15 @@ public:
     virtual bool draws_from_sampler() const { return false; }
 
     // True when the integrator chooses a light at each shading point through
-    // RenderSettings::light_sampler (chapter 03's pt-nee and pt-mis); the others refuse a named
+    // RenderSettings::light_sampler (chapter 03's light-sampling path tracers); the others refuse a named
     // `--light-sampler`.
     virtual bool chooses_lights_per_point() const { return false; }
 
     // True for a Markov chain over paths (chapter 05): once it has found a rare bright path it
     // explores the paths near it, so its error does not hang on how seldom such a path is
     // sampled from scratch. `auto` trusts only these where much of the image rests on
-    // specular-diffuse-specular paths (sds_probe.hpp), which the others sample from scratch with
-    // one strategy only.
+    // specular-diffuse-specular paths (chapter 05's sds_probe.hpp), which the others sample from
+    // scratch with one strategy only.
     virtual bool explores_found_paths() const { return false; }
 };
 

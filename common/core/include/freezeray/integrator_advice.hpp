@@ -1,8 +1,9 @@
 // Which integrator suits a scene: `info`'s suggestion and `render`'s integrator when neither the
 // command line nor the scene names one. The knowledge is the chapters': each adds a rule for the
-// integrator it teaches (chapter 03: pt-mis wherever there is light; chapter 04: bdpt where
-// caustics are lit; chapter 05: mlt where a probe finds specular-diffuse-specular paths), and the
-// rules of later chapters are asked first. common/ names no integrator.
+// integrator it teaches (chapter 03: its path tracer wherever there is light; chapter 04:
+// bidirectional path tracing where caustics are lit; chapter 05: the Markov chain where a probe
+// finds specular-diffuse-specular paths), and the rules of later chapters are asked first.
+// common/ names no integrator.
 #pragma once
 
 #include <functional>

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "freezeray/accelerator.hpp"
+#include "freezeray/camera.hpp"
 #include "freezeray/capability_catalogue.hpp"
 #include "freezeray/integrator.hpp"
 #include "freezeray/integrator_advice.hpp"
@@ -48,11 +49,11 @@ using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const Render
 using MaterialFactory = std::function<std::unique_ptr<Material>(const Parameters&, const MaterialContext&)>;
 using AcceleratorFactory = std::function<std::unique_ptr<Accelerator>(const Parameters& options)>;
 // A texture layout reads its settings (chapter 08's filter and texel format) once, and gives back
-// what stores each decoded image in that layout, and whether its lookups read a pixel's
-// footprint (TextureLookup's derivatives): Scene::intersect computes footprints only then.
+// what stores each decoded image in that layout, and how its lookups learn a pixel's footprint
+// (TextureLookup's derivatives): Scene::intersect computes footprints only where one is given.
 struct TextureStorageMaker {
     std::function<std::shared_ptr<const TextureStorage>(const Image& image)> make;
-    bool uses_footprint = false;  // chapter 08's trilinear filter; chapter 02's layout looks up at the point
+    TextureFootprint footprint = nullptr;  // chapter 08's trilinear filter; chapter 02's layout looks up at the point
     std::shared_ptr<const TextureStorage> operator()(const Image& image) const { return make(image); }
 };
 using TextureLayoutFactory = std::function<TextureStorageMaker(const Parameters& settings)>;
@@ -60,6 +61,9 @@ using TextureLayoutFactory = std::function<TextureStorageMaker(const Parameters&
 using LightFactory = std::function<std::unique_ptr<Light>(const Parameters&)>;
 // A sampler (chapter 09) with its settings: the scene's "render" block under the command line's.
 using SamplerFactory = std::function<std::unique_ptr<Sampler>(const Parameters& options)>;
+// A camera from what every camera states (position, view, field of view, image size) and the
+// scene's "camera" block, whose keys of its own it reads and checks.
+using CameraFactory = std::function<std::unique_ptr<Camera>(const CameraDescription&, const Parameters& block)>;
 // An area light for one emissive triangle of a mesh (world space) with the given emitted radiance.
 using AreaLightFactory =
     std::function<std::unique_ptr<Light>(const TriangleMesh& mesh, std::uint32_t triangle, const Spectrum& emission)>;
@@ -72,8 +76,8 @@ public:
     using Entry = CapabilityEntry;
 
     // program: the executable's name ("ch01", "freezeray"); chapter: the last chapter it
-    // registers. The constructor registers what lives in common/: the bruteforce accelerator and
-    // the independent sampler.
+    // registers. The constructor registers what lives in common/: the bruteforce accelerator, the
+    // independent sampler and the pinhole camera.
     Registry(std::string program, int chapter);
 
     const std::string& program() const { return renderer_->program; }
@@ -90,6 +94,7 @@ public:
     Catalogue<TextureLayoutFactory> texture_layouts;
     Catalogue<SamplerFactory> samplers;
     Catalogue<LightSamplerFactory> light_samplers;
+    Catalogue<CameraFactory> cameras;
 
     // A kind's catalogue, for what every kind does alike.
     const CatalogueBase& catalogue(CapabilityKind kind) const;
@@ -110,9 +115,10 @@ public:
     // image is stored; `settings` may be null: the layout's defaults.
     TextureStorageMaker texture_storage_maker(const std::string& layout, const std::string& where,
                                               const Parameters* settings = nullptr) const;
-    // Whether some registered layout, with these settings, reads the pixel's footprint. A scene's
-    // textures may each name their own layout, so a scene needs footprints when any layout may.
-    bool texture_layouts_use_footprint(const Parameters* settings) const;
+    // The footprint of the first registered layout that, with these settings, reads one; null
+    // when none does. A scene's textures may each name their own layout, so a scene needs
+    // footprints when any layout may.
+    TextureFootprint texture_footprint(const Parameters* settings) const;
 
     // A chapter's rule for when its integrator suits a scene (integrator_advice.hpp); the rules
     // of later chapters are asked first.

@@ -9,7 +9,6 @@
 #include "freezeray/mesh.hpp"
 #include "freezeray/options.hpp"
 #include "freezeray/scene_effects.hpp"
-#include "freezeray/texture_footprint.hpp"
 #include "freezeray/texture_storage.hpp"
 
 #include <nlohmann/json.hpp>
@@ -54,7 +53,8 @@ public:
     std::vector<std::unique_ptr<Light>> lights;
     const Light* environment = nullptr;         // the infinite light, if any (at most one)
     CameraDescription camera_description;
-    std::optional<PinholeCamera> camera;
+    std::unique_ptr<const Camera> camera;       // made by the registered camera the scene names
+    std::string camera_type;                    // its name ("pinhole")
     std::unique_ptr<Accelerator> accelerator;
     std::string accelerator_name;               // the registered accelerator it was built with
     std::string texture_layout;                 // the layout its image textures are stored in (may be empty)
@@ -73,11 +73,11 @@ public:
     // The closest hit along the ray, and whether anything blocks it. Surfaces whose alpha mask
     // cuts them out where the ray meets them are passed through (scene.cpp).
     // The hit on a textured material carries the footprint of a pixel in texture space when
-    // the scene's texture layouts read it (texture_footprints).
+    // the scene's texture layouts read it (texture_footprint).
     std::optional<Hit> intersect(const Ray& ray) const {
         std::optional<Hit> hit = has_alpha_masks ? intersect_through_cutouts(ray) : accelerator->intersect(ray);
-        if (hit && texture_footprints && materials[hit->material]->is_textured())
-            add_texture_footprint(*hit, meshes[hit->mesh], *camera);
+        if (hit && texture_footprint != nullptr && materials[hit->material]->is_textured())
+            texture_footprint(*hit, meshes[hit->mesh], *camera);
         return hit;
     }
     bool occluded(const Ray& ray) const {
@@ -87,10 +87,11 @@ public:
     // With alpha masks: per mesh and triangle, 1 where the triangle's material has no mask, so
     // that it blocks every ray that meets it (set by load_scene; see occluded_through_cutouts).
     TriangleFlags opaque_triangles;
-    // The scene has textures, a camera, and a texture layout that filters by footprint
-    // (Registry::texture_layouts_use_footprint; set by load_scene). Chapters 02-07's layout looks
-    // up at the point, so their hits skip the footprint's work.
-    bool texture_footprints = false;
+    // How hits on textured materials learn the pixel's footprint: the scene has textures, a
+    // camera, and a texture layout that filters by footprint gives it
+    // (Registry::texture_footprint; set by load_scene). Null for chapters 02-07's layout, which
+    // looks up at the point, so their hits skip the footprint's work.
+    TextureFootprint texture_footprint = nullptr;
     const Material& material(const Hit& hit) const { return *materials[hit.material]; }
 
     // Radiance arriving along a ray that leaves the scene: the environment's, or black.

@@ -11,6 +11,14 @@
 
 namespace freezeray {
 
+class Camera;
+struct Hit;
+struct TriangleMesh;
+
+// How a texture layout's lookups learn a pixel's footprint in texture space: sets the hit's
+// duv_dx and duv_dy (chapter 08's ray differentials). Null for a layout that looks up at the point.
+using TextureFootprint = void (*)(Hit& hit, const TriangleMesh& mesh, const Camera& camera);
+
 // What happens to texture coordinates outside [0, 1]: the image repeats, its edge texels
 // stretch out, or it repeats mirrored so that neighbouring copies meet without a seam.
 enum class WrapMode { Repeat, Clamp, Mirror };

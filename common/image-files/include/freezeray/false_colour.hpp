@@ -1,6 +1,6 @@
 // False-colour maps of per-pixel error: viridis on a log scale between fixed bounds, so that the
 // maps of different integrators (and of different reports) can be compared by eye. The viridis
-// map itself serves other per-pixel quantities too (chapter 06's traversal-cost images).
+// map itself serves other per-pixel quantities too (chapter 06's images of traversal work).
 #pragma once
 
 #include "freezeray/image.hpp"

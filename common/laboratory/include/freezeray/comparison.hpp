@@ -126,7 +126,8 @@ struct Comparison {
 
 class Registry;
 
-// A comparison's run, "pt-mis", "pt-mis@sobol", "pt-mis@bvh" or "pt-mis@sobol@bvh": the
+// A comparison's run, INTEGRATOR, INTEGRATOR@SAMPLER, INTEGRATOR@LIGHT_SAMPLER or
+// INTEGRATOR@SAMPLER@LIGHT_SAMPLER: the
 // integrator, and the sampler and light sampler it names (each empty when the run names none).
 // Each name after an @ must be a registered sampler or light sampler (InputError otherwise).
 struct RunName {
@@ -137,7 +138,7 @@ RunName parse_run_name(const std::string& run, const Registry& registry);
 // What `compare` is asked to do (plain data, parsed in cli.cpp).
 struct CompareRequest {
     std::string scene;
-    std::vector<std::string> integrators;  // "pt-mis", or "pt-mis@sobol", "pt-mis@bvh", "pt-mis@sobol@bvh"
+    std::vector<std::string> integrators;  // run names (RunName): an integrator, @ a sampler, @ a light sampler
     std::string sampler;                   // the runs' sampler where they name none (empty: the default)
     std::string light_sampler;             // the runs' light sampler where they name none (empty: the default)
     double time_seconds = 0.0;           // > 0: equal time

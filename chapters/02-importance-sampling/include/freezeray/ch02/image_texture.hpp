@@ -3,7 +3,7 @@
 #pragma once
 
 #include "freezeray/ch02/texture.hpp"
-#include "freezeray/ch02/texture_storage.hpp"
+#include "freezeray/ch02/linear_layout.hpp"
 #include "freezeray/parameters.hpp"
 
 #include <memory>

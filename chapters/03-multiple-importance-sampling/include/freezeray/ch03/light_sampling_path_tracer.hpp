@@ -6,7 +6,7 @@
 
 #include "freezeray/integrator.hpp"
 #include "freezeray/scene.hpp"
-#include "freezeray/ch03/light_sampler.hpp"
+#include "freezeray/ch03/fixed_light_sampler.hpp"
 #include "freezeray/ch03/mis.hpp"
 
 namespace freezeray::ch03 {

@@ -10,7 +10,7 @@
 #include "freezeray/ch04/camera_importance.hpp"
 #include "freezeray/ch04/light_path_loop.hpp"
 #include "freezeray/scene.hpp"
-#include "freezeray/ch03/light_sampler.hpp"
+#include "freezeray/ch03/fixed_light_sampler.hpp"
 
 #include <optional>
 

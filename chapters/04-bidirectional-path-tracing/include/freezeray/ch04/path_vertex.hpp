@@ -7,7 +7,7 @@
 #include "freezeray/hit.hpp"
 #include "freezeray/light.hpp"
 #include "freezeray/scene.hpp"
-#include "freezeray/ch03/light_sampler.hpp"
+#include "freezeray/ch03/fixed_light_sampler.hpp"
 
 namespace freezeray::ch04 {
 

@@ -41,7 +41,7 @@ public:
         ++paths_[half_];
     }
     // Adds `value` to the pixel containing film position raster_position (pixels, as
-    // PinholeCamera::generate_ray). Positions outside the film are ignored.
+    // Camera::generate_ray). Positions outside the film are ignored.
     void add_splat(const Vec2& raster_position, const Spectrum& value) { add_splat(raster_position, value, 0); }
     // The same into extra image `layer` (>= 1) of a film made with that many extra layers; such
     // splats do not count in the image or its error estimate.
@@ -64,7 +64,7 @@ private:
 // Normalisation: a pixel's value is the sum of its splats divided by the number of light paths
 // per pixel (all light paths / pixel count), which is the sample count per pixel of a light
 // tracing render: with the camera's importance normalised over the whole film
-// (PinholeCamera::importance), a light path's splats estimate pixel count x the pixel's value.
+// (Camera::importance), a light path's splats estimate pixel count x the pixel's value.
 // Error estimate: a splatted pixel has no independent samples of its own, so its variance comes
 // from the two half-images I_even and I_odd, independent estimates from n_even and n_odd paths:
 // Var[I] is estimated by (I_even - I_odd)^2 n_even n_odd / n^2 (1 / 4 for equal halves), unbiased

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "freezeray/accelerator.hpp"
-#include "freezeray/ch06/close_hits.hpp"
+#include "freezeray/close_hits.hpp"
 #include "freezeray/ch06/kdtree_node.hpp"
 #include "freezeray/ch06/kdtree_settings.hpp"
 #include "freezeray/ch06/kdtree_statistics.hpp"

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "freezeray/cache_line_allocator.hpp"
-#include "freezeray/ch02/texture_storage.hpp"
+#include "freezeray/ch02/linear_layout.hpp"
 #include "freezeray/ch08/mip_map.hpp"
 #include "freezeray/ch08/texture_layout_settings.hpp"
 #include "freezeray/image.hpp"

@@ -12,7 +12,7 @@
 // is at least (1 - share) of the tree's), and where it is wrong the uniform part bounds the loss.
 #pragma once
 
-#include "freezeray/ch03/light_sampler.hpp"
+#include "freezeray/ch03/fixed_light_sampler.hpp"
 #include "freezeray/light_sampler.hpp"
 
 #include <memory>

@@ -1,9 +1,9 @@
 // The footprint of a pixel in texture space.
-#include "freezeray/texture_footprint.hpp"
+#include "freezeray/ch08/texture_footprint.hpp"
 
 #include <cmath>
 
-namespace freezeray {
+namespace freezeray::ch08 {
 
 namespace {
 
@@ -12,7 +12,7 @@ using DVec3 = glm::dvec3;
 }  // namespace
 
 // BOOK(texture-footprint)
-void add_texture_footprint(Hit& hit, const TriangleMesh& mesh, const PinholeCamera& camera) {
+void add_texture_footprint(Hit& hit, const TriangleMesh& mesh, const Camera& camera) {
     const DVec3 to_hit = DVec3(hit.position) - DVec3(camera.position());
     const double distance = glm::length(to_hit);
     const DVec3 normal(hit.geometric_normal);
@@ -64,4 +64,4 @@ void add_texture_footprint(Hit& hit, const TriangleMesh& mesh, const PinholeCame
 }
 // END BOOK
 
-}  // namespace freezeray
+}  // namespace freezeray::ch08

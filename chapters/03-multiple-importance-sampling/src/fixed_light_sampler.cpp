@@ -1,5 +1,5 @@
 // Light selection by power (pbrt-v3, section 14.3.3).
-#include "freezeray/ch03/light_sampler.hpp"
+#include "freezeray/ch03/fixed_light_sampler.hpp"
 
 #include <algorithm>
 
