@@ -1,4 +1,4 @@
-// Every warp of common/warps.hpp against its own density (chi-square goodness of fit).
+// Every warp of chapter 01's warps.hpp against its own density (chi-square goodness of fit).
 #include "freezeray/ch01/lambertian.hpp"
 #include "freezeray/ch01/warps.hpp"
 
