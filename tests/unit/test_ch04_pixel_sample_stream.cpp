@@ -28,12 +28,12 @@ public:
 
 protected:
     void begin(int, int, std::uint32_t, std::uint64_t) override { dimensions.clear(); }
-    float sample_1d(const DrawPlace& place) override {
-        dimensions.push_back(place.dimension);
+    float sample_1d(const Draw& draw) override {
+        dimensions.push_back(draw.dimension);
         return 0.5f;
     }
-    Vec2 sample_2d(const DrawPlace& place) override {
-        dimensions.push_back(place.dimension);
+    Vec2 sample_2d(const Draw& draw) override {
+        dimensions.push_back(draw.dimension);
         return Vec2(0.5f);
     }
 };

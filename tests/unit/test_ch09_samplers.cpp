@@ -74,21 +74,21 @@ bool is_01_net(const std::vector<float>& values, int m) {
 }
 
 // The draws of one pixel's samples [first, first + count) at one place of the layout.
-enum class Draw { Pixel, LightPosition1, BsdfDirection1, BsdfDirection4, LightChoice1, Roulette3, BsdfLobe16 };
+enum class Drawn { Pixel, LightPosition1, BsdfDirection1, BsdfDirection4, LightChoice1, Roulette3, BsdfLobe16 };
 
-Vec2 draw_2d(Sampler& s, Draw d) {
+Vec2 draw_2d(Sampler& s, Drawn d) {
     switch (d) {
-        case Draw::Pixel: return s.pixel_2d();
-        case Draw::LightPosition1: s.start_vertex(1); return s.get_2d(VertexDimension::LightPosition);
-        case Draw::BsdfDirection1: s.start_vertex(1); return s.get_2d(VertexDimension::BsdfDirection);
+        case Drawn::Pixel: return s.pixel_2d();
+        case Drawn::LightPosition1: s.start_vertex(1); return s.get_2d(VertexDimension::LightPosition);
+        case Drawn::BsdfDirection1: s.start_vertex(1); return s.get_2d(VertexDimension::BsdfDirection);
         default: s.start_vertex(4); return s.get_2d(VertexDimension::BsdfDirection);
     }
 }
 
-float draw_1d(Sampler& s, Draw d) {
+float draw_1d(Sampler& s, Drawn d) {
     switch (d) {
-        case Draw::LightChoice1: s.start_vertex(1); return s.get_1d(VertexDimension::LightChoice);
-        case Draw::Roulette3: s.start_vertex(3); return s.get_1d(VertexDimension::Roulette);
+        case Drawn::LightChoice1: s.start_vertex(1); return s.get_1d(VertexDimension::LightChoice);
+        case Drawn::Roulette3: s.start_vertex(3); return s.get_1d(VertexDimension::Roulette);
         default: s.start_vertex(16); return s.get_1d(VertexDimension::BsdfLobe);
     }
 }
@@ -96,8 +96,8 @@ float draw_1d(Sampler& s, Draw d) {
 // The draws of samples first .. first + count - 1 of one pixel: `draw(sampler, d)` after each
 // sample is started (draw_2d for points, draw_1d for values).
 template <typename Value>
-std::vector<Value> pixel_draws(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d,
-                               Value (*draw)(Sampler&, Draw)) {
+std::vector<Value> pixel_draws(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Drawn d,
+                               Value (*draw)(Sampler&, Drawn)) {
     std::vector<Value> draws;
     for (std::uint64_t i = first; i < first + count; ++i) {
         s.start_pixel_sample(static_cast<int>(pixel % 64), static_cast<int>(pixel / 64), pixel, i);
@@ -106,11 +106,11 @@ std::vector<Value> pixel_draws(Sampler& s, std::uint32_t pixel, std::uint64_t fi
     return draws;
 }
 
-std::vector<Vec2> pixel_points(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d) {
+std::vector<Vec2> pixel_points(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Drawn d) {
     return pixel_draws<Vec2>(s, pixel, first, count, d, draw_2d);
 }
 
-std::vector<float> pixel_values(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Draw d) {
+std::vector<float> pixel_values(Sampler& s, std::uint32_t pixel, std::uint64_t first, std::uint64_t count, Drawn d) {
     return pixel_draws<float>(s, pixel, first, count, d, draw_1d);
 }
 
@@ -211,14 +211,14 @@ void require_pixel_draws_are_nets(Sampler& sampler, const std::string& what) {
             for (int m = 0; m <= 10; ++m)
                 for (std::uint64_t block : {0ull, 1ull, 6ull}) {
                     const std::uint64_t first = block << m, count = std::uint64_t{1} << m;
-                    for (Draw d : {Draw::Pixel, Draw::LightPosition1, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
+                    for (Drawn d : {Drawn::Pixel, Drawn::LightPosition1, Drawn::BsdfDirection1, Drawn::BsdfDirection4}) {
                         std::string why;
                         const bool net = is_02_net(pixel_points(sampler, pixel, first, count, d), m, why);
                         INFO(what << ", seed " << seed << ", pixel " << pixel << ", m = " << m << ", block " << block
                                   << ", draw " << static_cast<int>(d) << ": " << why);
                         REQUIRE(net);
                     }
-                    for (Draw d : {Draw::LightChoice1, Draw::Roulette3, Draw::BsdfLobe16}) {
+                    for (Drawn d : {Drawn::LightChoice1, Drawn::Roulette3, Drawn::BsdfLobe16}) {
                         INFO(what << ", seed " << seed << ", pixel " << pixel << ", m = " << m << ", block " << block
                                   << ", 1D draw " << static_cast<int>(d));
                         REQUIRE(is_01_net(pixel_values(sampler, pixel, first, count, d), m));
@@ -293,7 +293,7 @@ TEST_CASE("the stratified sampler stratifies every block of 1, 1, 2, 4, ... samp
     sampler.set_seed(5);
     for (int k = 0; k <= 10; ++k) {
         const std::uint64_t first = k == 0 ? 1 : std::uint64_t{1} << k, count = std::uint64_t{1} << k;
-        for (Draw d : {Draw::Pixel, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
+        for (Drawn d : {Drawn::Pixel, Drawn::BsdfDirection1, Drawn::BsdfDirection4}) {
             const std::vector<Vec2> points = pixel_points(sampler, 12, first, count, d);
             // The cells of the 2^ceil(k/2) x 2^floor(k/2) grid: the (a = ceil(k/2)) boxes of a net.
             const int columns_log2 = (k + 1) / 2;
@@ -310,7 +310,7 @@ TEST_CASE("the stratified sampler stratifies every block of 1, 1, 2, 4, ... samp
             INFO("block of 2^" << k << ", draw " << static_cast<int>(d));
             for (int c : cells) REQUIRE(c == 1);
         }
-        for (Draw d : {Draw::LightChoice1, Draw::Roulette3}) {
+        for (Drawn d : {Drawn::LightChoice1, Drawn::Roulette3}) {
             INFO("block of 2^" << k << ", 1D draw " << static_cast<int>(d));
             REQUIRE(is_01_net(pixel_values(sampler, 12, first, count, d), k));
         }
@@ -323,7 +323,7 @@ TEST_CASE("the stratified sampler stratifies every block of 1, 1, 2, 4, ... samp
     int same_half = 0;
     constexpr int pixels = 4000;
     for (std::uint32_t pixel = 0; pixel < pixels; ++pixel) {
-        const std::vector<float> first_two = pixel_values(sampler, pixel, 0, 2, Draw::LightChoice1);
+        const std::vector<float> first_two = pixel_values(sampler, pixel, 0, 2, Drawn::LightChoice1);
         same_half += (first_two[0] < 0.5f) == (first_two[1] < 0.5f) ? 1 : 0;
     }
     INFO(same_half << " of " << pixels << " pixels have samples 0 and 1 in the same half");
@@ -365,8 +365,8 @@ namespace {
 // The draws of samples 0 .. count - 1 of every pixel of the square of side `side` whose corner
 // is (x0, y0), pooled.
 template <typename Value>
-std::vector<Value> square_draws(Sampler& s, int x0, int y0, int side, std::uint64_t count, Draw d,
-                                Value (*draw)(Sampler&, Draw)) {
+std::vector<Value> square_draws(Sampler& s, int x0, int y0, int side, std::uint64_t count, Drawn d,
+                                Value (*draw)(Sampler&, Drawn)) {
     std::vector<Value> draws;
     for (int y = y0; y < y0 + side; ++y)
         for (int x = x0; x < x0 + side; ++x)
@@ -423,14 +423,14 @@ TEST_CASE("the zsobol sampler's aligned squares of 2^k x 2^k pixels are nets tog
         for (int k : {1, 2})
             for (auto [x0, y0] : {std::pair{0, 0}, std::pair{4, 8}, std::pair{60, 36}}) {
                 const int side = 1 << k, m = L + 2 * k;
-                for (Draw d : {Draw::Pixel, Draw::BsdfDirection1, Draw::BsdfDirection4}) {
+                for (Drawn d : {Drawn::Pixel, Drawn::BsdfDirection1, Drawn::BsdfDirection4}) {
                     std::string what;
                     const bool net = is_02_net(square_draws<Vec2>(sampler, x0, y0, side, std::uint64_t{1} << L, d, draw_2d), m, what);
                     INFO("L = " << L << ", square of " << side << " at (" << x0 << ", " << y0 << "), draw "
                                 << static_cast<int>(d) << ": " << what);
                     REQUIRE(net);
                 }
-                for (Draw d : {Draw::LightChoice1, Draw::Roulette3}) {
+                for (Drawn d : {Drawn::LightChoice1, Drawn::Roulette3}) {
                     INFO("L = " << L << ", square of " << side << " at (" << x0 << ", " << y0 << "), 1D draw "
                                 << static_cast<int>(d));
                     REQUIRE(is_01_net(square_draws<float>(sampler, x0, y0, side, std::uint64_t{1} << L, d, draw_1d), m));

@@ -52,7 +52,8 @@ std::uint32_t SobolSampler::reversed_shuffled_index(std::uint32_t set) {
     return shuffled.reversed_index;
 }
 
-float SobolSampler::sample_1d(const DrawPlace& place) {
+float SobolSampler::sample_1d(const Draw& draw) {
+    const DrawPlace place = draw_place(draw);
     if (place.dimension >= QuasiRandomDimensions) return hashed_random(place.dimension);
     const std::uint32_t index = reversed_shuffled_index(place.set);
     // Each draw its own scramble, seeded by its dimension.
@@ -60,7 +61,8 @@ float SobolSampler::sample_1d(const DrawPlace& place) {
     return fraction_to_float(scrambled_sobol_coordinate(tables_, index, place.coordinate, scramble_seed));
 }
 
-Vec2 SobolSampler::sample_2d(const DrawPlace& place) {
+Vec2 SobolSampler::sample_2d(const Draw& draw) {
+    const DrawPlace place = draw_place(draw);
     if (place.dimension + 1 >= QuasiRandomDimensions)
         return Vec2(hashed_random(place.dimension), hashed_random(place.dimension + 1));
     const std::uint32_t index = reversed_shuffled_index(place.set);

@@ -60,14 +60,14 @@ float StratifiedSampler::jitter(std::uint32_t dimension) const {
     return hashed_uniform(mix_bits(mix_bits(pixel_key_ + sample_index_) ^ dimension));
 }
 
-float StratifiedSampler::sample_1d(const DrawPlace& place) {
-    const std::uint32_t dimension = place.dimension;
+float StratifiedSampler::sample_1d(const Draw& draw) {
+    const std::uint32_t dimension = draw.dimension;
     const double n = static_cast<double>(1u << block_log2_);
     return static_cast<float>(std::min((stratum(dimension) + jitter(dimension)) / n, 0x1.fffffep-1));
 }
 
-Vec2 StratifiedSampler::sample_2d(const DrawPlace& place) {
-    const std::uint32_t dimension = place.dimension;
+Vec2 StratifiedSampler::sample_2d(const Draw& draw) {
+    const std::uint32_t dimension = draw.dimension;
     // A 2^ceil(k/2) x 2^floor(k/2) grid of cells for a block of 2^k samples.
     const int columns_log2 = (block_log2_ + 1) / 2;
     const std::uint32_t cell = stratum(dimension);

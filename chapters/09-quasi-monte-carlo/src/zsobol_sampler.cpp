@@ -89,7 +89,8 @@ std::uint32_t ZSobolSampler::sequence_index(std::uint32_t set) {
     return block.start | within;
 }
 
-float ZSobolSampler::sample_1d(const DrawPlace& place) {
+float ZSobolSampler::sample_1d(const Draw& draw) {
+    const DrawPlace place = draw_place(draw);
     if (place.dimension >= QuasiRandomDimensions) return hashed_random(place.dimension);
     const std::uint32_t index = reverse_bits(sequence_index(place.set));
     // One Owen scramble per dimension for the whole tile: a scramble per pixel would undo the
@@ -98,7 +99,8 @@ float ZSobolSampler::sample_1d(const DrawPlace& place) {
     return fraction_to_float(scrambled_sobol_coordinate(tables_, index, place.coordinate, scramble_seed));
 }
 
-Vec2 ZSobolSampler::sample_2d(const DrawPlace& place) {
+Vec2 ZSobolSampler::sample_2d(const Draw& draw) {
+    const DrawPlace place = draw_place(draw);
     if (place.dimension + 1 >= QuasiRandomDimensions)
         return Vec2(hashed_random(place.dimension), hashed_random(place.dimension + 1));
     const std::uint32_t index = reverse_bits(sequence_index(place.set));

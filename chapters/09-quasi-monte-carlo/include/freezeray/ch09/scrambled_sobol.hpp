@@ -3,6 +3,7 @@
 #pragma once
 
 #include "freezeray/ch09/fixed_point.hpp"
+#include "freezeray/ch09/joint_sets.hpp"
 #include "freezeray/ch09/owen_scrambling.hpp"
 #include "freezeray/ch09/radical_inverse.hpp"
 #include "freezeray/ch09/sobol_matrices.hpp"

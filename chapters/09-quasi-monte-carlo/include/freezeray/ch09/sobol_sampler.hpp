@@ -2,6 +2,7 @@
 // Scrambling", JCGT 9(4), 2020).
 #pragma once
 
+#include "freezeray/ch09/joint_sets.hpp"
 #include "freezeray/ch09/scrambled_sobol.hpp"
 #include "freezeray/sampler.hpp"
 
@@ -32,8 +33,8 @@ public:
 
 protected:
     void begin(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) override;
-    float sample_1d(const DrawPlace& place) override;
-    Vec2 sample_2d(const DrawPlace& place) override;
+    float sample_1d(const Draw& draw) override;
+    Vec2 sample_2d(const Draw& draw) override;
 
 private:
     // The hash of (seed, pixel, dimension) that seeds the dimension's scramble and, for a set's

@@ -26,8 +26,8 @@ public:
 protected:
     void begin(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) override;
     // Each dimension stratified on its own: a draw's joint set is not read.
-    float sample_1d(const DrawPlace& place) override;
-    Vec2 sample_2d(const DrawPlace& place) override;
+    float sample_1d(const Draw& draw) override;
+    Vec2 sample_2d(const Draw& draw) override;
 
 private:
     std::uint32_t stratum(std::uint32_t dimension) const;

@@ -4,6 +4,7 @@
 // Jakob and Humphreys, "Physically Based Rendering", 4th edition, 2023, section 8.7.7).
 #pragma once
 
+#include "freezeray/ch09/joint_sets.hpp"
 #include "freezeray/ch09/scrambled_sobol.hpp"
 #include "freezeray/ch09/sobol_sampler.hpp"
 #include "freezeray/sampler.hpp"
@@ -51,8 +52,8 @@ public:
 
 protected:
     void begin(int x, int y, std::uint32_t pixel_index, std::uint64_t sample_index) override;
-    float sample_1d(const DrawPlace& place) override;
-    Vec2 sample_2d(const DrawPlace& place) override;
+    float sample_1d(const Draw& draw) override;
+    Vec2 sample_2d(const Draw& draw) override;
 
 private:
     // The sequence index of this sample's draws of the joint set `set`.
