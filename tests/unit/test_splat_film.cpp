@@ -82,7 +82,7 @@ TEST_CASE("a splatting render refuses to resume instead of producing a wrong ima
     settings.samples_per_pixel = 2;
     settings.threads = 1;
     const auto integrator = testing::full_registry().integrators.make("light-tracing", "test", settings, Parameters::none());
-    CHECK_FALSE(integrator->resumable());
+    CHECK_FALSE(testing::full_registry().integrator_traits("light-tracing", "test").resumable);
     Progress quiet(true);
     const RenderResult first = integrator->render(scene, settings, quiet);
     CHECK(first.samples_per_pixel == 2u);

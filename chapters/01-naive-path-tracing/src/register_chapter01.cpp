@@ -19,9 +19,10 @@ void register_chapter01(Registry& registry) {
                               return std::make_unique<ch01::DiffuseMaterial>(albedo);
                           });
     registry.integrators.add("pt-naive", 1, "naive path tracing: uniform hemisphere sampling, emission found by hitting it",
-                            [](const RenderSettings& settings, const Parameters&) {
-                                return std::make_unique<ch01::NaivePathTracer>(settings.max_depth);
-                            });
+                            {{.draws_from_sampler = true},
+                             [](const RenderSettings& settings, const Parameters&) {
+                                 return std::make_unique<ch01::NaivePathTracer>(settings.max_depth);
+                             }});
     // Naive path tracing finds emitters by hitting them, so never a point, spot or directional light.
     registry.add_advice({"pt-naive", [](const Scene& scene, const AdviceRequest&) -> std::optional<std::string> {
                              if (scene.effects.delta_lights) return std::nullopt;

@@ -78,9 +78,10 @@ void register_chapter02(Registry& registry) {
                                             nullptr};
                                 });
     registry.integrators.add("pt-is", 2, "path tracing with BSDF importance sampling and Russian roulette",
-                            [](const RenderSettings& settings, const Parameters&) {
-                                return std::make_unique<ch02::ImportanceSampledPathTracer>(settings.max_depth);
-                            });
+                            {{.draws_from_sampler = true},
+                             [](const RenderSettings& settings, const Parameters&) {
+                                 return std::make_unique<ch02::ImportanceSampledPathTracer>(settings.max_depth);
+                             }});
     registry.add_advice({"pt-is", [](const Scene& scene, const AdviceRequest&) -> std::optional<std::string> {
                              if (scene.effects.delta_lights) return std::nullopt;  // found only by light sampling
                              return "BSDF importance sampling";

@@ -16,11 +16,16 @@ namespace {
 
 void add_path_tracer(Registry& registry, const std::string& name, const std::string& summary,
                      ch03::LightSamplingSettings variant) {
-    registry.integrators.add(name, 3, summary, [variant](const RenderSettings& settings, const Parameters&) {
-        ch03::LightSamplingSettings s = variant;
-        s.max_depth = settings.max_depth;
-        return std::make_unique<ch03::LightSamplingPathTracer>(s);
-    });
+    // A variant with its own fixed light selection (pt-nee-uniform, pt-mis-uniform) takes no
+    // light sampler.
+    const IntegratorTraits traits{.samples_lights = true,
+                                  .draws_from_sampler = true,
+                                  .chooses_lights_per_point = !variant.selection_fixed};
+    registry.integrators.add(name, 3, summary, {traits, [variant](const RenderSettings& settings, const Parameters&) {
+                                                    ch03::LightSamplingSettings s = variant;
+                                                    s.max_depth = settings.max_depth;
+                                                    return std::make_unique<ch03::LightSamplingPathTracer>(s);
+                                                }});
 }
 
 }  // namespace

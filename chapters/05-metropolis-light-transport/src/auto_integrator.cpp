@@ -66,26 +66,6 @@ IntegratorChoice choose_by_pilots(const std::vector<PilotMeasurement>& pilots) {
 }
 // END BOOK
 
-bool AutoIntegrator::samples_lights() const {
-    for (const Candidate& c : candidates_)
-        if (c.integrator->samples_lights()) return true;
-    return false;
-}
-
-// The render's light sampler reaches the candidates that choose lights per point (pt-mis); the
-// others ignore it.
-bool AutoIntegrator::chooses_lights_per_point() const {
-    for (const Candidate& c : candidates_)
-        if (c.integrator->chooses_lights_per_point()) return true;
-    return false;
-}
-
-bool AutoIntegrator::draws_from_sampler() const {
-    for (const Candidate& c : candidates_)
-        if (c.integrator->draws_from_sampler()) return true;
-    return false;
-}
-
 RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& settings, Progress& progress) const {
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -96,7 +76,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
     // directional lights, which no ray can hit.
     std::vector<const Candidate*> usable;
     for (const Candidate& c : candidates_)
-        if (!scene.effects.delta_lights || c.integrator->samples_lights()) usable.push_back(&c);
+        if (!scene.effects.delta_lights || c.traits.samples_lights) usable.push_back(&c);
     if (usable.empty()) throw InputError("--integrator", "auto has no candidate that can render this scene's lights");
 
     // BOOK(auto-sds)
@@ -120,10 +100,10 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
                                     "a camera path hitting the light carries: a tail of rare bright samples no pilot measures";
             std::vector<const Candidate*> chains;
             for (const Candidate* c : usable)
-                if (c->integrator->explores_found_paths()) chains.push_back(c);
+                if (c->traits.explores_found_paths) chains.push_back(c);
             if (!chains.empty() && chains.size() < usable.size()) {
                 for (const Candidate* c : usable)
-                    if (!c->integrator->explores_found_paths())
+                    if (!c->traits.explores_found_paths)
                         left_out_before_pilots += (left_out_before_pilots.empty() ? "" : ", ") + c->name;
                 left_out_before_pilots += " left out before the pilots: " + why;
                 usable = chains;
@@ -139,7 +119,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
     if (usable.size() == 1) {
         const Candidate& only = *usable.front();
         RenderSettings whole = settings;
-        if (!only.integrator->draws_from_sampler()) whole.sampler = nullptr;
+        if (!only.traits.draws_from_sampler) whole.sampler = nullptr;
         RenderResult result = only.integrator->render(scene, whole, progress);
         result.seconds = elapsed();
         result.integrator = only.name;
@@ -221,7 +201,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
     RenderResult result;
     if (done) {
         result = std::move(pilot);
-    } else if (chosen.integrator->resumable() && !(settings.sampler && chosen.integrator->draws_from_sampler())) {
+    } else if (chosen.traits.resumable && !(settings.sampler && chosen.traits.draws_from_sampler)) {
         // Every pixel goes on from the pilot's samples: the same image as a render of the whole
         // budget with the chosen integrator from the start.
         rest.resume = pilot.film;
@@ -232,7 +212,7 @@ RenderResult AutoIntegrator::render(const Scene& scene, const RenderSettings& se
         // A film that cannot be continued, or a pilot drawn from another sampler than the rest's
         // (independent, then Sobol): the rest renders the next sample indices of the same seed
         // with the render's sampler, and the two are merged, as `merge` does.
-        if (!chosen.integrator->draws_from_sampler()) rest.sampler = nullptr;
+        if (!chosen.traits.draws_from_sampler) rest.sampler = nullptr;
         rest.first_sample = settings.first_sample + pilot.samples_per_pixel;
         if (settings.time_seconds <= 0.0 && settings.target_error <= 0.0)
             rest.samples_per_pixel = settings.samples_per_pixel - pilot.samples_per_pixel;
@@ -254,15 +234,26 @@ void register_auto_integrator(Registry& registry, int chapter) {
     std::vector<std::pair<std::string, IntegratorFactory>> factories;
     for (const char* name : {"pt-mis", "bdpt", "mlt"})
         if (const IntegratorFactory* factory = registry.integrators.find(name)) factories.emplace_back(name, *factory);
+    // What auto is: what any of its candidates is. The render's light sampler reaches the
+    // candidates that choose lights per point, and its sampler the chosen candidate's rest of the
+    // budget when that one draws from it (the pilots always use the independent sampler: their
+    // error is estimated from the per-pixel variance, honest only for independent samples,
+    // chapter 09). The choice is part of the render, so it cannot be resumed.
+    IntegratorTraits traits{.resumable = false};
+    for (const auto& [name, factory] : factories) {
+        traits.samples_lights |= factory.traits.samples_lights;
+        traits.draws_from_sampler |= factory.traits.draws_from_sampler;
+        traits.chooses_lights_per_point |= factory.traits.chooses_lights_per_point;
+    }
     registry.integrators.add("auto", chapter,
                             "the integrator chosen by measurement: short pilots with pt-mis, bdpt and mlt, the most "
                             "efficient one whose error estimate can be trusted renders the rest",
-                            [factories](const RenderSettings& settings, const Parameters& options) {
-                                std::vector<AutoIntegrator::Candidate> candidates;
-                                for (const auto& [name, factory] : factories)
-                                    candidates.push_back({name, factory(settings, options)});
-                                return std::make_unique<AutoIntegrator>(std::move(candidates));
-                            });
+                            {traits, [factories](const RenderSettings& settings, const Parameters& options) {
+                                 std::vector<AutoIntegrator::Candidate> candidates;
+                                 for (const auto& [name, factory] : factories)
+                                     candidates.push_back({name, factory.traits, factory(settings, options)});
+                                 return std::make_unique<AutoIntegrator>(std::move(candidates));
+                             }});
 }
 
 }  // namespace freezeray::ch05

@@ -8,6 +8,14 @@
 
 namespace freezeray {
 
+namespace {
+
+// Markov chains over bidirectional samples: their own streams, a splatting film (no resume), and
+// they explore the paths they find.
+constexpr IntegratorTraits ChainTraits{.samples_lights = true, .resumable = false, .explores_found_paths = true};
+
+}  // namespace
+
 void register_chapter05(Registry& registry) {
     register_chapter04(registry);  // chapters 01 to 04 first
     const ch05::MltSettings defaults;
@@ -27,17 +35,17 @@ void register_chapter05(Registry& registry) {
     registry.integrators.add("mlt", 5,
                             "Metropolis light transport in primary sample space, driving bdpt: Markov chains that "
                             "spend their samples where the light is",
-                            [](const RenderSettings& settings, const Parameters& options) {
-                                return std::make_unique<ch05::MetropolisLightTransport>(
-                                    ch05::read_mlt_settings(options, settings.max_depth, false));
-                            });
+                            {ChainTraits, [](const RenderSettings& settings, const Parameters& options) {
+                                 return std::make_unique<ch05::MetropolisLightTransport>(
+                                     ch05::read_mlt_settings(options, settings.max_depth, false));
+                             }});
     registry.integrators.add("mlt-multiplexed", 5,
                             "multiplexed Metropolis light transport: each state one path length and one bdpt strategy, "
                             "chosen by the chain",
-                            [](const RenderSettings& settings, const Parameters& options) {
-                                return std::make_unique<ch05::MetropolisLightTransport>(
-                                    ch05::read_mlt_settings(options, settings.max_depth, true));
-                            });
+                            {ChainTraits, [](const RenderSettings& settings, const Parameters& options) {
+                                 return std::make_unique<ch05::MetropolisLightTransport>(
+                                     ch05::read_mlt_settings(options, settings.max_depth, true));
+                             }});
     // With every candidate registered, the one chosen by measurement (chapters/05-metropolis-light-transport/src/auto_integrator.cpp).
     ch05::register_auto_integrator(registry, 5);
     // Where specular-diffuse-specular paths light much of the image, the chain (auto trusts only

@@ -21,10 +21,13 @@ void register_chapter06(Registry& registry) {
     registry.accelerators.set_default("kdtree");
     registry.integrators.add("traversal-cost", 6,
                             "not light: the KD-tree's interior nodes, leaves or triangle tests per camera ray, in false colour",
-                            [](const RenderSettings&, const Parameters& parameters) {
-                                return std::make_unique<ch06::TraversalCostIntegrator>(
-                                    ch06::read_traversal_quantity(parameters));
-                            });
+                            // Per pixel, from the sampler; a false-colour image is no film that later
+                            // samples could go on from.
+                            {{.draws_from_sampler = true, .resumable = false},
+                             [](const RenderSettings&, const Parameters& parameters) {
+                                 return std::make_unique<ch06::TraversalCostIntegrator>(
+                                     ch06::read_traversal_quantity(parameters));
+                             }});
     registry.add_option({"--traversal-cost-show", "traversal_cost_show", OptionType::Text, OptionTarget::Integrator,
                          "traversal-cost: nodes (interior nodes visited), leaves or tests (triangle tests); default nodes",
                          {"traversal-cost"}, 6});

@@ -63,7 +63,7 @@ struct SamplerChoice {
     std::shared_ptr<const Sampler> sampler;
 };
 SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
-                             const Integrator& integrator, const std::string& integrator_name, const Registry& registry);
+                             const IntegratorTraits& integrator, const std::string& integrator_name, const Registry& registry);
 
 // The light sampler a render names: the command line's (`requested`), else the scene's, else the
 // renderer's default (empty before chapter 03).
@@ -77,11 +77,11 @@ struct LightSamplerChoice {
     std::shared_ptr<const LightSampler> sampler;
 };
 LightSamplerChoice choose_light_sampler(const std::string& requested, const std::string& where, const Scene& scene,
-                                        const Integrator& integrator, const std::string& integrator_name,
+                                        const IntegratorTraits& integrator, const std::string& integrator_name,
                                         const Registry& registry);
 
 // A warning for an integrator that cannot find the scene's point, spot and directional lights
 // (no ray can hit them), or an empty string.
-std::string unreachable_lights_warning(const Scene& scene, const Integrator& integrator, const std::string& name);
+std::string unreachable_lights_warning(const Scene& scene, const IntegratorTraits& integrator, const std::string& name);
 
 }  // namespace freezeray

@@ -22,8 +22,8 @@
 
 namespace freezeray {
 
-std::string unreachable_lights_warning(const Scene& scene, const Integrator& integrator, const std::string& name) {
-    if (!scene.effects.delta_lights || integrator.samples_lights()) return "";
+std::string unreachable_lights_warning(const Scene& scene, const IntegratorTraits& integrator, const std::string& name) {
+    if (!scene.effects.delta_lights || integrator.samples_lights) return "";
     return name + " finds light only by hitting it; the scene's point, spot and directional lights cannot be hit "
                   "and stay black (an integrator that samples lights renders them: `info` suggests one)";
 }
@@ -53,12 +53,12 @@ RunName parse_run_name(const std::string& run, const Registry& registry) {
 }
 
 SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
-                             const Integrator& integrator, const std::string& integrator_name, const Registry& registry) {
+                             const IntegratorTraits& integrator, const std::string& integrator_name, const Registry& registry) {
     const bool named = !requested.empty() || !scene.defaults.sampler.empty();
     std::string name = !requested.empty() ? requested : named ? scene.defaults.sampler : registry.samplers.default_name();
     const std::string at = !requested.empty() ? where : scene.file + ": /render/sampler";
     registry.require(CapabilityKind::Sampler, name, at);
-    if (!integrator.draws_from_sampler() && name != "independent") {
+    if (!integrator.draws_from_sampler && name != "independent") {
         if (named)
             throw InputError(at, integrator_name + " draws its numbers from its own streams (light paths, Markov chains), "
                                  "not from a sampler: only the integrators whose samples belong to pixels take "
@@ -74,10 +74,10 @@ std::string light_sampler_name(const std::string& requested, const Scene& scene,
 }
 
 LightSamplerChoice choose_light_sampler(const std::string& requested, const std::string& where, const Scene& scene,
-                                        const Integrator& integrator, const std::string& integrator_name,
+                                        const IntegratorTraits& integrator, const std::string& integrator_name,
                                         const Registry& registry) {
     const std::string at = !requested.empty() ? where : scene.file + ": /render/light_sampler";
-    if (!integrator.chooses_lights_per_point()) {
+    if (!integrator.chooses_lights_per_point) {
         if (!requested.empty())
             throw InputError(at, integrator_name + " does not choose lights through a light sampler (only the integrators "
                                  "that sample a light at each shading point do; light paths and bidirectional "
@@ -207,13 +207,14 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     check_options_apply(options.chapter_options, registry.options(), OptionTarget::Integrator, integrator_name);
     const auto chapter_options = integrator_options(scene, options.chapter_options, registry);
     const auto integrator = registry.integrators.make(integrator_name, "--integrator", settings, chapter_options->parameters());
-    if (const std::string w = unreachable_lights_warning(scene, *integrator, integrator_name); !w.empty())
+    const IntegratorTraits& traits = registry.integrator_traits(integrator_name, "--integrator");
+    if (const std::string w = unreachable_lights_warning(scene, traits, integrator_name); !w.empty())
         std::cerr << "warning: " << w << "\n";
 
-    const SamplerChoice sampler = choose_sampler(options.sampler, "--sampler", scene, *integrator, integrator_name, registry);
+    const SamplerChoice sampler = choose_sampler(options.sampler, "--sampler", scene, traits, integrator_name, registry);
     settings.sampler = sampler.sampler;
     const LightSamplerChoice light_sampler =
-        choose_light_sampler(options.light_sampler, "--light-sampler", scene, *integrator, integrator_name, registry);
+        choose_light_sampler(options.light_sampler, "--light-sampler", scene, traits, integrator_name, registry);
     settings.light_sampler = light_sampler.sampler;
     if (!options.quiet && light_sampler.sampler) {
         std::string lines;
@@ -227,7 +228,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
                                settings.seed,     settings.first_sample, settings.max_depth,
                                scene.camera->width(), scene.camera->height(), light_sampler.name};
     if (!options.resume.empty()) {
-        if (!integrator->resumable())
+        if (!traits.resumable)
             throw InputError("--resume", integrator_name + " cannot be resumed exactly (its film is not a per-pixel sample count that "
                                          "a pass can go on from); render "
                                          "more samples with another --seed or --sample-offset and `merge` the renders");
@@ -287,7 +288,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
                      "integrator or a material, please report it with the scene\n";
     if (result.interrupted) {
         const std::string& made_with = made_by.integrator;
-        if (integrator->resumable())
+        if (traits.resumable)
             std::cerr << "interrupted: wrote " << out << " (" << result.samples_per_pixel << " spp in every pixel) and "
                       << state_path_for(out) << "; continue with the same command and --resume " << state_path_for(out)
                       << "\n";
@@ -313,11 +314,9 @@ int run_render(const RenderOptions& options, const Registry& registry) {
             std::snprintf(text, sizeof text, "estimated relMSE %.4g", result.estimated_relative_mse);
             estimate = text;
             // auto names the integrator it chose: the sampler reached the image only if that one draws from it.
-            const bool drew_from_sampler =
-                result.integrator.empty()
-                    ? integrator->draws_from_sampler()
-                    : registry.integrators.make(result.integrator, "--integrator", settings, chapter_options->parameters())
-                          ->draws_from_sampler();
+            const bool drew_from_sampler = result.integrator.empty()
+                                               ? traits.draws_from_sampler
+                                               : registry.integrator_traits(result.integrator, "--integrator").draws_from_sampler;
             if (sampler.name != "independent" && drew_from_sampler)
                 estimate += " (as if independent: " + sampler.name + "'s is lower)";
         }

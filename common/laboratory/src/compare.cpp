@@ -119,13 +119,14 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
         const RunName run = parse_run_name(run_name, registry);
         const std::string& name = run.integrator;
         integrators.push_back(registry.integrators.make(name, "--integrators", settings, options->parameters()));
+        const IntegratorTraits& traits = registry.integrator_traits(name, "--integrators");
         samplers.push_back(choose_sampler(!run.sampler.empty() ? run.sampler : request.sampler,
-                                          !run.sampler.empty() ? "--integrators" : "--sampler", scene, *integrators.back(), name,
+                                          !run.sampler.empty() ? "--integrators" : "--sampler", scene, traits, name,
                                           registry));
         light_samplers.push_back(choose_light_sampler(!run.light_sampler.empty() ? run.light_sampler : request.light_sampler,
                                                       !run.light_sampler.empty() ? "--integrators" : "--light-sampler", scene,
-                                                      *integrators.back(), name, registry));
-        const std::string warning = unreachable_lights_warning(scene, *integrators.back(), name);
+                                                      traits, name, registry));
+        const std::string warning = unreachable_lights_warning(scene, traits, name);
         if (!warning.empty() && !request.quiet) std::cerr << "warning: " << warning << "\n";
     }
 

@@ -77,36 +77,36 @@ struct RenderResult {
     std::string integrator_choice;
 };
 
+// What an integrator is, declared once when it is registered (Registry::integrators), so that a
+// run is set up before any integrator is made: which sampler and light sampler it takes, which
+// lights it can find, whether a saved render of it can go on.
+struct IntegratorTraits {
+    // It samples lights directly, and so finds point, spot and directional lights, which no ray
+    // can hit (chapter 03).
+    bool samples_lights = false;
+    // It draws its numbers from RenderSettings::sampler (the per-pixel loop, render_pixels, and
+    // bidirectional path tracing, whose samples belong to pixels); the others (light tracing,
+    // Markov chains) use their own streams, and `--sampler` other than independent is refused
+    // for them.
+    bool draws_from_sampler = false;
+    // It chooses a light at each shading point through RenderSettings::light_sampler (chapter 03's
+    // light-sampling path tracers); the others refuse a named `--light-sampler`.
+    bool chooses_lights_per_point = false;
+    // A saved render can be continued exactly (`--resume`): its film's state is a per-pixel sample
+    // count that a pass can go on from.
+    bool resumable = true;
+    // A Markov chain over paths (chapter 05): once it has found a rare bright path it explores the
+    // paths near it, so its error does not hang on how seldom such a path is sampled from
+    // scratch. `auto` trusts only these where much of the image rests on
+    // specular-diffuse-specular paths (chapter 05's sds_probe.hpp), which the others sample from
+    // scratch with one strategy only.
+    bool explores_found_paths = false;
+};
+
 class Integrator {
 public:
     virtual ~Integrator() = default;
     virtual RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const = 0;
-
-    // True when the integrator samples lights directly, and so can find point, spot and
-    // directional lights, which no ray can hit (chapter 03).
-    virtual bool samples_lights() const { return false; }
-
-    // False when a saved render cannot be continued exactly (`--resume`): one whose film's
-    // state is not a per-pixel sample count that a pass can go on from.
-    virtual bool resumable() const { return true; }
-
-    // True when the integrator draws its numbers from RenderSettings::sampler (the per-pixel
-    // loop, render_pixels, and bidirectional path tracing, whose samples belong to pixels); the
-    // others (light tracing, Markov chains) use their own streams, and `--sampler` other than
-    // independent is refused for them.
-    virtual bool draws_from_sampler() const { return false; }
-
-    // True when the integrator chooses a light at each shading point through
-    // RenderSettings::light_sampler (chapter 03's light-sampling path tracers); the others refuse a named
-    // `--light-sampler`.
-    virtual bool chooses_lights_per_point() const { return false; }
-
-    // True for a Markov chain over paths (chapter 05): once it has found a rare bright path it
-    // explores the paths near it, so its error does not hang on how seldom such a path is
-    // sampled from scratch. `auto` trusts only these where much of the image rests on
-    // specular-diffuse-specular paths (chapter 05's sds_probe.hpp), which the others sample from
-    // scratch with one strategy only.
-    virtual bool explores_found_paths() const { return false; }
 };
 
 // One sample of the radiance arriving along a camera ray. All randomness from `sampler`, which
@@ -132,7 +132,6 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
 class PixelIntegrator : public Integrator {
 public:
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
-    bool draws_from_sampler() const override { return true; }
 
     // One sample of the radiance arriving along `ray`. All randomness from `sampler`, by
     // dimension (sampler.hpp); scratch allocations in `arena`, which is reset before every call.

@@ -45,7 +45,14 @@ struct MaterialContext {
 // options its chapter declared given over it (Parameters::none() for the defaults). A factory
 // reads them into its settings struct, whose defaults are written once, and checks them (errors
 // name the JSON path or the flag).
-using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const RenderSettings&, const Parameters& options)>;
+// An integrator's factory carries what the integrator is (integrator.hpp's IntegratorTraits).
+struct IntegratorFactory {
+    IntegratorTraits traits;
+    std::function<std::unique_ptr<Integrator>(const RenderSettings&, const Parameters& options)> make;
+    std::unique_ptr<Integrator> operator()(const RenderSettings& settings, const Parameters& options) const {
+        return make(settings, options);
+    }
+};
 using MaterialFactory = std::function<std::unique_ptr<Material>(const Parameters&, const MaterialContext&)>;
 using AcceleratorFactory = std::function<std::unique_ptr<Accelerator>(const Parameters& options)>;
 // A texture layout reads its settings (chapter 08's filter and texel format) once, and gives back
@@ -95,6 +102,13 @@ public:
     Catalogue<SamplerFactory> samplers;
     Catalogue<LightSamplerFactory> light_samplers;
     Catalogue<CameraFactory> cameras;
+
+    // What integrator `name` is; an unknown name is an InputError at `where`.
+    const IntegratorTraits& integrator_traits(const std::string& name, const std::string& where) const {
+        const IntegratorFactory* factory = integrators.find(name);
+        if (factory == nullptr) integrators.unknown(name, where);
+        return factory->traits;
+    }
 
     // A kind's catalogue, for what every kind does alike.
     const CatalogueBase& catalogue(CapabilityKind kind) const;

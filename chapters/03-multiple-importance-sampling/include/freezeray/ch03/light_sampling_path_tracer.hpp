@@ -32,9 +32,6 @@ public:
     explicit LightSamplingPathTracer(const LightSamplingSettings& settings);
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
-    bool draws_from_sampler() const override { return true; }
-    bool samples_lights() const override { return true; }
-    bool chooses_lights_per_point() const override { return !settings_.selection_fixed; }
 
     // One sample of the radiance arriving along `ray`.
     Spectrum li(const Ray& ray, const Scene& scene, const LightSampler& lights, Sampler& sampler, ScratchArena& arena) const;

@@ -74,11 +74,6 @@ public:
     explicit BidirectionalPathTracer(const BidirectionalSettings& settings);
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
-    bool samples_lights() const override { return true; }
-    bool resumable() const override { return false; }
-    // A bidirectional sample belongs to a pixel (its camera subpath starts there): with a render's
-    // sampler (chapter 09), its three streams draw from the pixel's samples (pixel_sample_stream.hpp).
-    bool draws_from_sampler() const override { return true; }
 
 private:
     BidirectionalSettings settings_;

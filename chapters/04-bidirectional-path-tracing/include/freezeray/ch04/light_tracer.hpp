@@ -64,8 +64,6 @@ public:
     explicit LightTracer(const LightTracingSettings& settings);
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
-    bool samples_lights() const override { return true; }
-    bool resumable() const override { return false; }
 
     // Traces one light path and splats its connections to the camera into `splats`.
     void trace_light_path(const Scene& scene, const ch03::FixedLightSampler& lights, PCG32& random, ScratchArena& arena,

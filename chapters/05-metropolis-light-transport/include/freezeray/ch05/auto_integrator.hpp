@@ -43,19 +43,12 @@ public:
 
     struct Candidate {
         std::string name;
+        IntegratorTraits traits;
         std::unique_ptr<Integrator> integrator;
     };
     explicit AutoIntegrator(std::vector<Candidate> candidates) : candidates_(std::move(candidates)) {}
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
-    bool samples_lights() const override;
-    bool chooses_lights_per_point() const override;
-    // The render's sampler reaches the chosen candidate's rest of the budget when it draws from
-    // one (pt-mis: the Sobol sampler from chapter 09 on). The pilots always use the independent
-    // sampler: their error is estimated from the per-pixel variance, honest only for independent
-    // samples (chapter 09).
-    bool draws_from_sampler() const override;
-    bool resumable() const override { return false; }  // the choice is part of the render
 
 private:
     std::vector<Candidate> candidates_;

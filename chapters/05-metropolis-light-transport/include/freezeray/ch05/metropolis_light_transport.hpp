@@ -83,9 +83,6 @@ public:
     explicit MetropolisLightTransport(const MltSettings& settings);
 
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
-    bool samples_lights() const override { return true; }
-    bool resumable() const override { return false; }
-    bool explores_found_paths() const override { return true; }
 
 private:
     MltSettings settings_;

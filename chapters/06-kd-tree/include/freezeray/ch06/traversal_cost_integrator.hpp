@@ -26,10 +26,6 @@ public:
     // image's 99th percentile (bright; the few pixels above it are bright too); the scale is in
     // the result's notes. The scene's accelerator must be the KD-tree (InputError otherwise).
     RenderResult render(const Scene& scene, const RenderSettings& settings, Progress& progress) const override;
-    bool draws_from_sampler() const override { return true; }
-
-    // A false-colour image is no film that later samples could go on from.
-    bool resumable() const override { return false; }
 
 private:
     TraversalQuantity quantity_;
