@@ -25,7 +25,7 @@ namespace {
 // chapter 06's exercises, which a student of chapter 04 has not written yet.
 Scene load_cornell_box() {
     SceneLoadOptions options;
-    options.accelerator = "bruteforce";
+    options.selections[CapabilityKind::Accelerator] = "bruteforce";
     return load_scene(testing::scene_path("cornell-box/scene.json"), testing::full_registry(), options);
 }
 

@@ -1,7 +1,7 @@
 // Helpers for tests that render.
 #include "test_scenes.hpp"
 
-#include "freezeray/comparison.hpp"
+#include "freezeray/run_plan.hpp"
 #include "freezeray/scene_loader.hpp"
 #include "freezeray/complete_renderer.hpp"
 #include "freezeray/error.hpp"
@@ -51,9 +51,14 @@ RenderResult render(const TestRender& request) {
     SceneLoadOptions options;
     options.width = request.width;
     options.height = request.height;
-    options.accelerator = request.accelerator;
+    if (!request.accelerator.empty()) options.selections[CapabilityKind::Accelerator] = request.accelerator;
     for (const auto& [key, value] : request.accelerator_settings.items()) options.options.values[key] = value;
-    for (const auto& [key, value] : request.texture_settings.items()) options.options.values[key] = value;
+    for (const auto& [key, value] : request.texture_settings.items()) {
+        if (key == "layout")  // --texture-layout, the kind's selector
+            options.selections[CapabilityKind::TextureLayout] = value.get<std::string>();
+        else
+            options.options.values[key] = value;
+    }
     const Scene scene = load_scene(request.scene, full_registry(), options);
     RenderSettings settings;
     settings.samples_per_pixel = request.samples_per_pixel;
@@ -69,9 +74,10 @@ RenderResult render(const TestRender& request) {
     // "integrator@sampler", "integrator@light_sampler", or both, as compare's runs name them.
     const RunName run = parse_run_name(request.integrator, full_registry());
     const std::string& integrator_name = run.integrator;
-    if (!run.sampler.empty()) settings.sampler = full_registry().samplers.make(run.sampler, "test", Parameters::none());
-    if (!run.light_sampler.empty())
-        settings.light_sampler = full_registry().light_samplers.make(run.light_sampler, "test", scene.lights, Parameters::none());
+    if (const auto it = run.named.find(CapabilityKind::Sampler); it != run.named.end())
+        settings.sampler = full_registry().samplers.make(it->second, "test", Parameters::none());
+    if (const auto it = run.named.find(CapabilityKind::LightSampler); it != run.named.end())
+        settings.light_sampler = full_registry().light_samplers.make(it->second, "test", scene.lights, Parameters::none());
     const auto integrator = full_registry().integrators.make(integrator_name, "test", settings, chapter_options->parameters());
     Progress quiet(true);
     return integrator->render(scene, settings, quiet);

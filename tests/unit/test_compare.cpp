@@ -315,7 +315,7 @@ TEST_CASE("a run that overshoots its time budget says so", "[unit][compare]") {
     request.integrators = {"pt-mis"};
     request.time_seconds = 0.001;
     request.width = request.height = 128;
-    request.sampler = "independent";  // the course's default (sobol) would add its own warning
+    request.selections[CapabilityKind::Sampler] = "independent";  // the course's default (sobol) would add its own warning
     request.quiet = true;
     request.out_folder = folder.file("report");
     const Comparison comparison = run_comparison(request, testing::full_registry());

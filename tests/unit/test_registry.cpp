@@ -114,8 +114,8 @@ TEST_CASE("the accelerator comes from the command line, else the scene's block, 
     const std::string scene = testing::scene_path("cornell-box/scene.json");
     CHECK(load_scene(scene, registry).accelerator_name == registry.accelerators.default_name());
     SceneLoadOptions options;
-    options.accelerator = "bruteforce";
+    options.selections[CapabilityKind::Accelerator] = "bruteforce";
     CHECK(load_scene(scene, registry, options).accelerator_name == "bruteforce");
-    options.accelerator = "octree";
+    options.selections[CapabilityKind::Accelerator] = "octree";
     CHECK_THROWS_WITH(load_scene(scene, registry, options), Catch::Contains("--accel") && Catch::Contains("octree"));
 }

@@ -233,7 +233,7 @@ TEST_CASE("Sponza loads under its white sky, at night with its lanterns and nigh
         return;
     }
     SceneLoadOptions options;
-    options.accelerator = "bruteforce";  // what is loaded is the question here, not the tree
+    options.selections[CapabilityKind::Accelerator] = "bruteforce";  // what is loaded is the question here, not the tree
     constexpr std::size_t SponzaTriangles = 262266;  // 262,267 in the file, one of zero area dropped
     SECTION("under the white sky: the constant environment, nothing that emits") {
         const Scene scene = load_scene(testing::scene_path("sponza/scene.json"), testing::full_registry(), options);
@@ -283,7 +283,7 @@ TEST_CASE("Bitterli's scenes load with the cameras and lights of their originals
         return;
     }
     SceneLoadOptions options;
-    options.accelerator = "bruteforce";
+    options.selections[CapabilityKind::Accelerator] = "bruteforce";
     struct Expected {
         const char* scene;
         std::size_t triangles, emissive;  // triangles after the loader drops the degenerate ones

@@ -50,7 +50,7 @@ void register_chapter05(Registry& registry) {
     ch05::register_auto_integrator(registry, 5);
     // Where specular-diffuse-specular paths light much of the image, the chain (auto trusts only
     // the chains there too).
-    registry.add_advice({"mlt", ch05::advise_chain});
+    registry.add_advice({"mlt", ch05::advise_chain, true});  // its probe traces paths
 }
 
 }  // namespace freezeray

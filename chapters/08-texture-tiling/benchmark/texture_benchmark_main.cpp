@@ -296,7 +296,7 @@ int main(int argc, char** argv) {
                                                 &ch08::add_texture_footprint};
                                     });
         SceneLoadOptions options;
-        options.options.values["layout"] = "recording";
+        options.selections[CapabilityKind::TextureLayout] = "recording";
         const Scene scene = load_scene(scene_path, registry, options);
         if (!scene.camera) throw InputError(scene_path, "has no camera");
         if (recording.images.empty()) throw InputError(scene_path, "has no image textures");

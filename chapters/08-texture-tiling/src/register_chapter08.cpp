@@ -34,10 +34,6 @@ void register_chapter08(Registry& registry) {
                                 "with MIP levels and 8-bit texels where the file had them",
                                 layout_factory(ch08::make_tiled_storage));
     registry.texture_layouts.set_default("tiled");
-    registry.add_option({"--texture-layout", "layout", OptionType::Text, OptionTarget::Textures,
-                         "how image textures are stored: linear or tiled (default: the scene's \"textures\" "
-                         "block, else tiled)",
-                         {"linear", "tiled"}, 8});
     registry.add_option({"--texture-filter", "filter", OptionType::Text, OptionTarget::Textures,
                          "textures: bilinear (level 0, as chapter 02) or trilinear (MIP levels chosen from the "
                          "pixel's footprint); default trilinear",

@@ -11,6 +11,7 @@
 #include "freezeray/scene.hpp"
 #include "freezeray/scene_loader.hpp"
 #include "freezeray/integrator_advice.hpp"
+#include "freezeray/run_plan.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -26,6 +27,43 @@ namespace freezeray {
 
 namespace {
 
+// The command-line selectors of every kind that has one (KindDescription::selector), offered from
+// one loop over the kinds: a kind appears once this renderer registers one of it. The integrator
+// is the command's own choice (render's --integrator, compare's --integrators), not a selector.
+class Selectors {
+public:
+    // `runs`: the command renders several runs, each of which may name its own per-run kinds.
+    void declare(CLI::App& command, const Registry& registry, bool runs) {
+        for (CapabilityKind kind : all_capability_kinds) {
+            const KindDescription& d = kind_description(kind);
+            const CatalogueBase& catalogue = registry.catalogue(kind);
+            if (*d.selector == '\0' || kind == CapabilityKind::Integrator || catalogue.list().empty()) continue;
+            std::string names;
+            for (const CapabilityEntry& e : catalogue.list()) names += (names.empty() ? "" : ", ") + e.name;
+            std::string own;  // "a run may name its own: INTEGRATOR@LIGHT_SAMPLER; "
+            if (runs && d.per_run) {
+                std::string upper = d.name;
+                for (char& c : upper) c = c == ' ' ? '_' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+                own = "a run may name its own: INTEGRATOR@" + upper + "; ";
+            }
+            options_.push_back({kind, command.add_option(d.selector, values_[kind],
+                                                         std::string(d.purpose) + ", one of: " + names + " (" + own +
+                                                             "default: the scene's, else " + catalogue.default_name() + ")")});
+        }
+    }
+    // The selectors given, by kind.
+    Selections values() const {
+        Selections given;
+        for (const auto& [kind, option] : options_)
+            if (option->count() > 0 && !values_.at(kind).empty()) given[kind] = values_.at(kind);
+        return given;
+    }
+
+private:
+    std::map<CapabilityKind, std::string> values_;  // a map: CLI11 keeps pointers to its values
+    std::vector<std::pair<CapabilityKind, CLI::Option*>> options_;
+};
+
 std::string two_digit(int chapter) { return (chapter < 10 ? "0" : "") + std::to_string(chapter); }
 
 void print_warnings(const Scene& scene) {
@@ -33,7 +71,10 @@ void print_warnings(const Scene& scene) {
 }
 
 int run_info(const std::string& scene_path, const Registry& registry) {
-    Scene scene = load_scene(scene_path, registry);
+    // The accelerator is built only when the suggestion's rules trace rays (chapter 05's probe).
+    SceneLoadOptions load;
+    load.build_accelerator = false;
+    Scene scene = load_scene(scene_path, registry, load);
     print_warnings(scene);
     const CameraDescription& c = scene.camera_description;
     std::cout << "scene:      " << scene_path << "\n"
@@ -64,15 +105,25 @@ int run_info(const std::string& scene_path, const Registry& registry) {
     std::cout << "\n";
     // How the integrators that sample lights choose them here (chapters 03 and 10), built as a
     // render builds it.
-    const std::string light_sampler = light_sampler_name("", scene, registry);
+    const CapabilityChoice light_sampler = scene_light_sampler(scene, registry);
     std::unique_ptr<LightSampler> sampler;
-    if (!light_sampler.empty() && !scene.lights.empty()) {
-        sampler = registry.light_samplers.make(light_sampler, scene.file + ": /render/light_sampler", scene.lights, Parameters::none());
-        std::cout << "light sampler: " << light_sampler << "\n";
+    if (!light_sampler.name.empty() && !scene.lights.empty()) {
+        sampler = registry.light_samplers.make(light_sampler.name, light_sampler.where, scene.lights, Parameters::none());
+        std::cout << "light sampler: " << light_sampler.name << "\n";
         for (const std::string& line : sampler->description()) std::cout << "  " << line << "\n";
     }
-    std::cout << "accelerator: " << scene.accelerator_name << "\n";
-    for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
+    const bool traced = std::any_of(registry.advice_rules().begin(), registry.advice_rules().end(),
+                                    [](const AdviceRule& rule) { return rule.traces_rays; });
+    if (traced) build_accelerator(scene);
+    std::cout << "accelerator: " << scene.accelerator_name;
+    if (!scene.accelerator_built) {
+        std::cout << " (not built: `render` builds it)\n";
+    } else {
+        char built[64];
+        std::snprintf(built, sizeof built, " (built in %.1f ms for the suggestion's probe)\n", 1e3 * scene.accelerator_build_seconds);
+        std::cout << built;
+        for (const auto& [name, value] : scene.accelerator->describe()) std::cout << "  " << name << ": " << value << "\n";
+    }
     std::cout << "effects:\n" << scene.effects.describe();
     std::cout << "work per ray ([ ] left out: the scene does not call for it):\n" << describe_work_per_ray(scene);
     // The best suited integrator this renderer has, and what its chapters measured to say so.
@@ -170,23 +221,8 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     render_command->add_option("--target-error", render.target_error,
                                "stop when the estimated relMSE falls below this (with --spp as a cap)");
     time->excludes(spp);
-    std::string accelerators;
-    for (const auto& e : registry.list(CapabilityKind::Accelerator)) accelerators += (accelerators.empty() ? "" : ", ") + e.name;
-    render_command->add_option("--accel", render.accelerator,
-                               "ray-intersection accelerator, one of: " + accelerators + " (default: the scene's, else " +
-                                   registry.accelerators.default_name() + ")");
-    std::string samplers;
-    for (const auto& e : registry.list(CapabilityKind::Sampler)) samplers += (samplers.empty() ? "" : ", ") + e.name;
-    render_command->add_option("--sampler", render.sampler,
-                               "where the per-pixel integrators' numbers come from, one of: " + samplers +
-                                   " (default: the scene's, else " + registry.samplers.default_name() + ")");
-    std::string light_samplers;
-    for (const auto& e : registry.list(CapabilityKind::LightSampler))
-        light_samplers += (light_samplers.empty() ? "" : ", ") + e.name;
-    if (!light_samplers.empty())
-        render_command->add_option("--light-sampler", render.light_sampler,
-                                   "how the integrators that sample lights choose one at a shading point, one of: " +
-                                       light_samplers + " (default: the scene's, else " + registry.light_samplers.default_name() + ")");
+    Selectors render_selectors;
+    render_selectors.declare(*render_command, registry, false);
     render_command->add_option("--threads", render.threads, "threads (default: every core)");
     render_command->add_option("--seed", render.seed, "random seed (default: the scene's)");
     render_command->add_option("--max-depth", render.max_depth, "maximum path length in segments");
@@ -238,14 +274,8 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
         ->add_option("--target-error", reference_target_error,
                      "with --make-reference: stop when the reference's estimated relMSE falls below this (--time, --spp cap it)")
         ->check(CLI::PositiveNumber);
-    compare_command->add_option("--sampler", compare.sampler,
-                                "the runs' sampler, one of: " + samplers + " (a run may name its own: INTEGRATOR@SAMPLER; default: the scene's, else " +
-                                    registry.samplers.default_name() + ")");
-    if (!light_samplers.empty())
-        compare_command->add_option("--light-sampler", compare.light_sampler,
-                                    "the runs' light sampler, one of: " + light_samplers +
-                                        " (a run may name its own: INTEGRATOR@LIGHT_SAMPLER; default: the scene's, else " +
-                                        registry.light_samplers.default_name() + ")");
+    Selectors compare_selectors;
+    compare_selectors.declare(*compare_command, registry, true);
     compare_command->add_option("--threads", compare.threads, "threads (default: every core)");
     compare_command->add_option("--seed", compare.seed,
                                 "random seed of the runs (default 0); a reference made with --make-reference gets another");
@@ -254,6 +284,8 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     compare_command->add_option("--height", compare.height, "image height (default: the scene's)");
     compare_command->add_option("--crop", compare_crops, "a region x,y,width,height to show magnified (repeatable)");
     compare_command->add_flag("--quiet", compare.quiet, "no progress lines");
+    ChapterOptions compare_options;
+    compare_options.declare(*compare_command, registry.options());
 
     try {
         app.parse(argc, argv);
@@ -265,6 +297,9 @@ int run_command_line(int argc, char** argv, const Registry& registry) {
     try {
         render.spp_given = spp->count() > 0;
         render.chapter_options = chapter_options.values();
+        render.selections = render_selectors.values();
+        compare.selections = compare_selectors.values();
+        compare.options = compare_options.values();
         if (*render_command) return run_render(render, registry);
         if (*info_command) return run_info(info_scene, registry);
         if (*merge_command) return run_merge(merge_out, merge_inputs, merge_quiet);

@@ -48,16 +48,20 @@ int run_make_reference(const CompareRequest& request, double target_error, const
     // A reference's samples must be independent: compare checks its estimated relMSE (from the
     // per-pixel variance, which assumes them) and subtracts it from the runs' errors.
     const RunName run = parse_run_name(request.integrators.front(), registry);
-    const std::string& integrator = run.integrator;
-    const std::string& sampler = run.sampler;
-    const std::string named_sampler = !sampler.empty() ? sampler : request.sampler;
+    const auto own_sampler = run.named.find(CapabilityKind::Sampler);
+    const auto given_sampler = request.selections.find(CapabilityKind::Sampler);
+    const std::string named_sampler = own_sampler != run.named.end()        ? own_sampler->second
+                                      : given_sampler != request.selections.end() ? given_sampler->second
+                                                                                  : "";
     if (!named_sampler.empty() && named_sampler != "independent")
-        throw InputError(!sampler.empty() ? "--integrators" : "--sampler",
+        throw InputError(own_sampler != run.named.end() ? "--integrators" : "--sampler",
                          "a reference is rendered with independent samples: its estimated relMSE, which compare checks "
                          "and subtracts from the runs' errors, assumes them (the " + named_sampler + " sampler's are not)");
-    render.integrator = integrator;
-    render.sampler = "independent";
-    render.light_sampler = !run.light_sampler.empty() ? run.light_sampler : request.light_sampler;
+    render.integrator = run.integrator;
+    render.selections = request.selections;
+    for (const auto& [kind, name] : run.named) render.selections[kind] = name;  // the run's own, over the command line's
+    render.selections[CapabilityKind::Sampler] = "independent";
+    render.chapter_options = request.options;
     render.time_seconds = request.time_seconds;
     render.spp = static_cast<long long>(request.samples_per_pixel);
     render.spp_given = request.samples_per_pixel > 0;

@@ -9,7 +9,7 @@
 #include "freezeray/render_state.hpp"
 #include "freezeray/scene.hpp"
 #include "freezeray/scene_loader.hpp"
-#include "freezeray/integrator_advice.hpp"
+#include "freezeray/run_plan.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -22,81 +22,7 @@
 
 namespace freezeray {
 
-std::string unreachable_lights_warning(const Scene& scene, const IntegratorTraits& integrator, const std::string& name) {
-    if (!scene.effects.delta_lights || integrator.samples_lights) return "";
-    return name + " finds light only by hitting it; the scene's point, spot and directional lights cannot be hit "
-                  "and stay black (an integrator that samples lights renders them: `info` suggests one)";
-}
-
-RunName parse_run_name(const std::string& run, const Registry& registry) {
-    const std::string usage = "'" + run + "': write INTEGRATOR, INTEGRATOR@SAMPLER, INTEGRATOR@LIGHT_SAMPLER or "
-                              "INTEGRATOR@SAMPLER@LIGHT_SAMPLER";
-    RunName name;
-    std::size_t at = run.find('@');
-    name.integrator = run.substr(0, at);
-    if (name.integrator.empty()) throw InputError("--integrators", usage);
-    while (at != std::string::npos) {
-        const std::size_t next = run.find('@', at + 1);
-        const std::string part = run.substr(at + 1, next == std::string::npos ? std::string::npos : next - at - 1);
-        if (part.empty()) throw InputError("--integrators", usage);
-        if (registry.has(CapabilityKind::Sampler, part) && name.sampler.empty())
-            name.sampler = part;
-        else if (registry.has(CapabilityKind::LightSampler, part) && name.light_sampler.empty())
-            name.light_sampler = part;
-        else if (registry.has(CapabilityKind::Sampler, part) || registry.has(CapabilityKind::LightSampler, part))
-            throw InputError("--integrators", usage + ": a run names at most one of each");
-        else
-            registry.require(CapabilityKind::Sampler, part, "--integrators");  // names the chapter, or the nearest name
-        at = next;
-    }
-    return name;
-}
-
-SamplerChoice choose_sampler(const std::string& requested, const std::string& where, const Scene& scene,
-                             const IntegratorTraits& integrator, const std::string& integrator_name, const Registry& registry) {
-    const bool named = !requested.empty() || !scene.defaults.sampler.empty();
-    std::string name = !requested.empty() ? requested : named ? scene.defaults.sampler : registry.samplers.default_name();
-    const std::string at = !requested.empty() ? where : scene.file + ": /render/sampler";
-    registry.require(CapabilityKind::Sampler, name, at);
-    if (!integrator.draws_from_sampler && name != "independent") {
-        if (named)
-            throw InputError(at, integrator_name + " draws its numbers from its own streams (light paths, Markov chains), "
-                                 "not from a sampler: only the integrators whose samples belong to pixels take "
-                                 "--sampler " + name);
-        name = "independent";
-    }
-    return {name, registry.samplers.make(name, at, Parameters::none())};
-}
-
-std::string light_sampler_name(const std::string& requested, const Scene& scene, const Registry& registry) {
-    return !requested.empty() ? requested : !scene.defaults.light_sampler.empty() ? scene.defaults.light_sampler
-                                                                                  : registry.light_samplers.default_name();
-}
-
-LightSamplerChoice choose_light_sampler(const std::string& requested, const std::string& where, const Scene& scene,
-                                        const IntegratorTraits& integrator, const std::string& integrator_name,
-                                        const Registry& registry) {
-    const std::string at = !requested.empty() ? where : scene.file + ": /render/light_sampler";
-    if (!integrator.chooses_lights_per_point) {
-        if (!requested.empty())
-            throw InputError(at, integrator_name + " does not choose lights through a light sampler (only the integrators "
-                                 "that sample a light at each shading point do; light paths and bidirectional "
-                                 "strategies choose by power everywhere)");
-        return {};  // a scene's default applies to the integrators that read it
-    }
-    const std::string name = light_sampler_name(requested, scene, registry);
-    if (name.empty()) return {};
-    return {name, registry.light_samplers.make(name, at, scene.lights, Parameters::none())};
-}
-
 namespace {
-
-// The integrator for a render that names none: the registered one the scene's effects call for,
-// else the first registered.
-std::string default_integrator(const Scene& scene, const Registry& registry) {
-    const IntegratorAdvice suggestion = advise_integrator(scene, registry);
-    return !suggestion.name.empty() ? suggestion.name : registry.list(CapabilityKind::Integrator).front().name;
-}
 
 // Set by the first SIGINT or SIGTERM: the render stops after its current tiles and writes what
 // it has. A second signal ends the process at once (the conventional 128 + signal number).
@@ -168,10 +94,20 @@ Image annotated_image(const Film& film, const RenderStateInfo& info, double seco
 
 }  // namespace
 
+void write_extra_images(const RenderResult& result, const std::string& subfolder, float exposure) {
+    if (result.extra_images.empty()) return;
+    // The integrator's own option chose the folder and checked it before the render.
+    const std::filesystem::path folder = std::filesystem::path(result.extra_images_folder) / subfolder;
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw InputError(folder.string(), "cannot create the folder: " + error.message());
+    for (const auto& [name, image] : result.extra_images) write_image((folder / name).string(), image, {exposure});
+}
+
 int run_render(const RenderOptions& options, const Registry& registry) {
     check_render_options(options);
     SceneLoadOptions load;
-    load.accelerator = options.accelerator;
+    load.selections = options.selections;
     load.options = options.chapter_options;
     load.width = options.width;
     load.height = options.height;
@@ -190,43 +126,34 @@ int run_render(const RenderOptions& options, const Registry& registry) {
         }
     }
 
-    RenderSettings settings;
-    settings.samples_per_pixel = options.spp_given ? static_cast<std::uint64_t>(options.spp) : scene.defaults.samples_per_pixel;
-    settings.time_seconds = options.time_seconds;
-    settings.target_error = options.target_error;
-    if (options.target_error > 0.0 && !options.spp_given) settings.samples_per_pixel = UINT64_MAX;  // error decides
-    settings.threads = options.threads;
-    settings.seed = options.seed >= 0 ? static_cast<std::uint64_t>(options.seed) : scene.defaults.seed;
-    settings.first_sample = static_cast<std::uint64_t>(options.sample_offset);
-    settings.max_depth = options.max_depth >= 0 ? options.max_depth : scene.defaults.max_depth;
-
-    std::string integrator_name = options.integrator;
-    if (integrator_name.empty()) integrator_name = scene.defaults.integrator;
-    if (integrator_name.empty()) integrator_name = default_integrator(scene, registry);
-    registry.require(CapabilityKind::Integrator, integrator_name, "--integrator");
-    check_options_apply(options.chapter_options, registry.options(), OptionTarget::Integrator, integrator_name);
-    const auto chapter_options = integrator_options(scene, options.chapter_options, registry);
-    const auto integrator = registry.integrators.make(integrator_name, "--integrator", settings, chapter_options->parameters());
-    const IntegratorTraits& traits = registry.integrator_traits(integrator_name, "--integrator");
-    if (const std::string w = unreachable_lights_warning(scene, traits, integrator_name); !w.empty())
-        std::cerr << "warning: " << w << "\n";
-
-    const SamplerChoice sampler = choose_sampler(options.sampler, "--sampler", scene, traits, integrator_name, registry);
-    settings.sampler = sampler.sampler;
-    const LightSamplerChoice light_sampler =
-        choose_light_sampler(options.light_sampler, "--light-sampler", scene, traits, integrator_name, registry);
-    settings.light_sampler = light_sampler.sampler;
-    if (!options.quiet && light_sampler.sampler) {
+    RunRequest request;
+    request.run = options.integrator;
+    request.where = "--integrator";
+    request.selections = options.selections;
+    request.options = options.chapter_options;
+    request.samples_per_pixel = options.spp_given ? static_cast<std::uint64_t>(options.spp) : 0;
+    request.time_seconds = options.time_seconds;
+    request.target_error = options.target_error;
+    request.threads = options.threads;
+    if (options.seed >= 0) request.seed = static_cast<std::uint64_t>(options.seed);
+    request.first_sample = static_cast<std::uint64_t>(options.sample_offset);
+    request.max_depth = options.max_depth;
+    RunPlan plan = plan_run(request, scene, registry);
+    RenderSettings& settings = plan.settings;
+    const std::string& integrator_name = plan.integrator_name;
+    const IntegratorTraits& traits = plan.traits;
+    for (const std::string& w : plan.warnings) std::cerr << "warning: " << w << "\n";
+    if (!options.quiet && settings.light_sampler) {
         std::string lines;
-        for (const std::string& line : light_sampler.sampler->description()) lines += (lines.empty() ? ": " : "; ") + line;
-        std::cerr << "light sampler: " << light_sampler.name << lines << "\n";
+        for (const std::string& line : settings.light_sampler->description()) lines += (lines.empty() ? ": " : "; ") + line;
+        std::cerr << "light sampler: " << plan.light_sampler_name << lines << "\n";
     }
 
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after
-    const RenderStateInfo info{options.scene,     integrator_name,       sampler.name,
+    const RenderStateInfo info{options.scene,     integrator_name,       plan.sampler_name,
                                settings.seed,     settings.first_sample, settings.max_depth,
-                               scene.camera->width(), scene.camera->height(), light_sampler.name};
+                               scene.camera->width(), scene.camera->height(), plan.light_sampler_name};
     if (!options.resume.empty()) {
         if (!traits.resumable)
             throw InputError("--resume", integrator_name + " cannot be resumed exactly (its film is not a per-pixel sample count that "
@@ -260,7 +187,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     RenderResult result;
     {
         const SignalGuard guard;
-        result = integrator->render(scene, settings, progress);
+        result = plan.integrator->render(scene, settings, progress);
     }
 
     // An integrator that handed the render to another (auto) names the one that made the image.
@@ -269,15 +196,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     Image final_image = annotated_image(*result.film, made_by, result.seconds, result.interrupted);
     if (!result.integrator_choice.empty()) final_image.metadata["freezeray:integrator_choice"] = result.integrator_choice;
     write_image(out, final_image, {options.exposure});
-    if (!result.extra_images.empty()) {
-        // The integrator's own option chose the folder and checked it before the render.
-        std::error_code error;
-        std::filesystem::create_directories(result.extra_images_folder, error);
-        if (error)
-            throw InputError(result.extra_images_folder, "cannot create the folder: " + error.message());
-    }
-    for (const auto& [name, image] : result.extra_images)
-        write_image((std::filesystem::path(result.extra_images_folder) / name).string(), image, {options.exposure});
+    write_extra_images(result, "", options.exposure);
     if (result.interrupted || options.checkpoint_seconds > 0.0) write_render_state(state_path_for(out), made_by, *result.film);
     for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
     if (!options.quiet)
@@ -317,8 +236,8 @@ int run_render(const RenderOptions& options, const Registry& registry) {
             const bool drew_from_sampler = result.integrator.empty()
                                                ? traits.draws_from_sampler
                                                : registry.integrator_traits(result.integrator, "--integrator").draws_from_sampler;
-            if (sampler.name != "independent" && drew_from_sampler)
-                estimate += " (as if independent: " + sampler.name + "'s is lower)";
+            if (plan.sampler_name != "independent" && drew_from_sampler)
+                estimate += " (as if independent: " + plan.sampler_name + "'s is lower)";
         }
         std::fprintf(stderr, "%s: %dx%d, %llu spp, %s, %s\n", made_by.integrator.c_str(), result.image.width(),
                      result.image.height(), static_cast<unsigned long long>(result.samples_per_pixel),

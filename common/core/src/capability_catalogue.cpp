@@ -14,14 +14,18 @@ const KindDescription& kind_description(CapabilityKind kind) {
     // The selectors and scene keys are the ones the command line (cli.cpp) and the scene format
     // (scenes/README.md) use.
     static const KindDescription kinds[] = {
-        {CapabilityKind::Integrator, "integrator", "--integrator", "render", "integrator"},
-        {CapabilityKind::Material, "material", "", "", ""},
-        {CapabilityKind::Accelerator, "accelerator", "--accel", "accelerator", "type"},
-        {CapabilityKind::Light, "light", "", "", ""},
-        {CapabilityKind::TextureLayout, "texture layout", "--texture-layout", "textures", "layout"},
-        {CapabilityKind::Sampler, "sampler", "--sampler", "render", "sampler"},
-        {CapabilityKind::LightSampler, "light sampler", "--light-sampler", "render", "light_sampler"},
-        {CapabilityKind::Camera, "camera", "", "camera", "type"},
+        {CapabilityKind::Integrator, "integrator", "--integrator", "render", "integrator", "how light is transported", false},
+        {CapabilityKind::Material, "material", "", "", "", "", false},
+        {CapabilityKind::Accelerator, "accelerator", "--accel", "accelerator", "type", "the ray-intersection accelerator",
+         false},
+        {CapabilityKind::Light, "light", "", "", "", "", false},
+        {CapabilityKind::TextureLayout, "texture layout", "--texture-layout", "textures", "layout",
+         "how image textures are stored", false},
+        {CapabilityKind::Sampler, "sampler", "--sampler", "render", "sampler",
+         "where the per-pixel integrators' numbers come from", true},
+        {CapabilityKind::LightSampler, "light sampler", "--light-sampler", "render", "light_sampler",
+         "how the integrators that sample lights choose one at a shading point", true},
+        {CapabilityKind::Camera, "camera", "", "camera", "type", "how rays leave the camera", false},
     };
     for (const KindDescription& k : kinds)
         if (k.kind == kind) return k;

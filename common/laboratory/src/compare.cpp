@@ -99,36 +99,33 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
         throw InputError("--time/--spp", "give a time budget (--time) or a sample count (--spp)");
     check_output_folder(request.out_folder);
     SceneLoadOptions load;
+    load.selections = request.selections;
+    load.options = request.options;
     load.width = request.width;
     load.height = request.height;
     const Scene scene = load_scene(request.scene, registry, load);
     for (const std::string& w : scene.warnings)
         if (!request.quiet) std::cerr << "warning: " << w << "\n";
 
-    RenderSettings settings;
-    settings.time_seconds = request.time_seconds;
-    settings.samples_per_pixel = request.time_seconds > 0.0 ? UINT64_MAX : request.samples_per_pixel;
-    settings.threads = request.threads;
-    settings.seed = request.seed;
-    settings.max_depth = request.max_depth > 0 ? request.max_depth : scene.defaults.max_depth;
-    std::vector<std::unique_ptr<Integrator>> integrators;
-    std::vector<SamplerChoice> samplers;
-    std::vector<LightSamplerChoice> light_samplers;
-    const auto options = integrator_options(scene, OptionValues{}, registry);  // the scene's "render" block
+    // Every run is planned (its names and options checked) before the first renders.
+    std::vector<RunRequest> requests;
     for (const std::string& run_name : request.integrators) {
-        const RunName run = parse_run_name(run_name, registry);
-        const std::string& name = run.integrator;
-        integrators.push_back(registry.integrators.make(name, "--integrators", settings, options->parameters()));
-        const IntegratorTraits& traits = registry.integrator_traits(name, "--integrators");
-        samplers.push_back(choose_sampler(!run.sampler.empty() ? run.sampler : request.sampler,
-                                          !run.sampler.empty() ? "--integrators" : "--sampler", scene, traits, name,
-                                          registry));
-        light_samplers.push_back(choose_light_sampler(!run.light_sampler.empty() ? run.light_sampler : request.light_sampler,
-                                                      !run.light_sampler.empty() ? "--integrators" : "--light-sampler", scene,
-                                                      traits, name, registry));
-        const std::string warning = unreachable_lights_warning(scene, traits, name);
-        if (!warning.empty() && !request.quiet) std::cerr << "warning: " << warning << "\n";
+        RunRequest run;
+        run.run = run_name;
+        run.where = "--integrators";
+        run.selections = request.selections;
+        run.options = request.options;
+        run.time_seconds = request.time_seconds;
+        run.samples_per_pixel = request.time_seconds > 0.0 ? 0 : request.samples_per_pixel;
+        run.threads = request.threads;
+        run.seed = request.seed;
+        run.max_depth = request.max_depth > 0 ? request.max_depth : -1;
+        requests.push_back(std::move(run));
     }
+    std::vector<RunPlan> plans = plan_runs(requests, scene, registry);
+    for (const RunPlan& plan : plans)
+        for (const std::string& w : plan.warnings)
+            if (!request.quiet) std::cerr << "warning: " << w << "\n";
 
     Comparison comparison;
     comparison.scene = request.scene;
@@ -164,12 +161,10 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
     }
 
     // BOOK(compare-run)
-    for (std::size_t i = 0; i < integrators.size(); ++i) {
+    for (RunPlan& plan : plans) {
         IntegratorRun run;
-        run.integrator = request.integrators[i];
-        RenderSettings run_settings = settings;
-        run_settings.sampler = samplers[i].sampler;
-        run_settings.light_sampler = light_samplers[i].sampler;
+        run.integrator = plan.name;
+        RenderSettings& run_settings = plan.settings;
         // At every pass boundary (1, 2, 4, ... spp) record the error so far, and that of the
         // pass's own samples (the film less the previous checkpoint's); this time is not counted
         // as render time.
@@ -195,7 +190,8 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
             run.checkpoints.push_back(c);
         };
         Progress progress(request.quiet, run.integrator);
-        run.result = integrators[i]->render(scene, run_settings, progress);
+        run.result = plan.integrator->render(scene, run_settings, progress);
+        write_extra_images(run.result, run.integrator, 0.0f);  // a run's own images (--bdpt-strategies), one folder each
         // A pass that cannot be cut (one sample per pixel, a batch of splatted paths) can run past
         // the budget: then the comparison is not quite at equal time, and the report says so.
         if (comparison.equal_time && run.result.seconds > OvershootTolerance * request.time_seconds) {
@@ -211,9 +207,9 @@ Comparison run_comparison(const CompareRequest& request, const Registry& registr
             run.ssim = ssim(run.result.image, *comparison.reference);
             run.mape = mape(run.result.image, *comparison.reference);
         } else {
-            if (samplers[i].name != "independent")
+            if (plan.sampler_name != "independent")
                 run.result.warnings.push_back("its error is estimated from the per-pixel variance, which assumes independent "
-                                              "samples; the " + samplers[i].name +
+                                              "samples; the " + plan.sampler_name +
                                               " sampler's are not, and its true error is usually lower: compare against a "
                                               "--reference to see it");
             run.relative_mse = run.result.estimated_relative_mse;

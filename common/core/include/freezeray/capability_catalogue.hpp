@@ -25,13 +25,19 @@ inline constexpr CapabilityKind all_capability_kinds[] = {CapabilityKind::Integr
 // What a kind declares once: its name, and how a render chooses one of it: the command line's
 // selector, else the key in the scene file's block that names it, else the catalogue's default.
 // Kinds that a scene lists many of (materials, lights) have no selector: each entry names its
-// type.
+// type. The command line offers every selector of a renderer from one loop over these
+// descriptions (cli.cpp), and the scene builder and the run plan choose every kind alike
+// (capability_choice.hpp).
 struct KindDescription {
     CapabilityKind kind;
     const char* name;         // in messages and listings: "light sampler"
     const char* selector;     // the command-line flag: "--light-sampler"; "" for none
     const char* scene_block;  // the scene file's block that names it: "render"; "" for none
     const char* scene_key;    // the key in that block: "light_sampler"
+    const char* purpose;      // what choosing one decides, for --help: "how lights are chosen ..."
+    // Chosen per run (a comparison's runs may each name their own: INTEGRATOR@NAME), rather than
+    // once for the scene (the accelerator, the texture layout, the camera).
+    bool per_run = false;
 };
 const KindDescription& kind_description(CapabilityKind kind);
 const char* capability_kind_name(CapabilityKind kind);

@@ -37,6 +37,9 @@ struct AdviceRequest {
 struct AdviceRule {
     std::string integrator;
     std::function<std::optional<std::string>(const Scene& scene, const AdviceRequest& request)> applies;
+    // It traces rays through the scene to decide (chapter 05's probe): the scene's accelerator
+    // must be built first (`info` builds it only then).
+    bool traces_rays = false;
 };
 
 // The first rule, the last registered first, whose integrator the registry has and that applies

@@ -4,6 +4,7 @@
 
 #include "freezeray/accelerator.hpp"
 #include "freezeray/camera.hpp"
+#include "freezeray/capability_choice.hpp"
 #include "freezeray/light.hpp"
 #include "freezeray/material.hpp"
 #include "freezeray/mesh.hpp"
@@ -29,8 +30,9 @@ struct RenderDefaults {
     std::uint64_t samples_per_pixel = 16;
     int max_depth = 0;               // 0: the integrator's default
     std::uint64_t seed = 0;
-    std::string sampler;             // empty: the renderer's default (chapter 09's `--sampler`)
-    std::string light_sampler;       // empty: the renderer's default (`--light-sampler`, chapters 03 and 10)
+    // The capabilities of the kinds chosen per run that the block names, by kind (its "sampler",
+    // "light_sampler"); a kind absent: the renderer's default.
+    Selections named;
     // The block's keys that registered integrator options read: the integrator's factory reads
     // and checks them (integrator_options below).
     nlohmann::json integrator_options = nlohmann::json::object();
@@ -57,6 +59,10 @@ public:
     std::string camera_type;                    // its name ("pinhole")
     std::unique_ptr<Accelerator> accelerator;
     std::string accelerator_name;               // the registered accelerator it was built with
+    // The accelerator is made with the scene and built over its meshes after it (the scene
+    // builder's build_accelerator), on its own clock; `info` builds it only when it must trace rays.
+    bool accelerator_built = false;
+    double accelerator_build_seconds = 0.0;
     std::string texture_layout;                 // the layout its image textures are stored in (may be empty)
     // Every image texture its materials use (each file and encoding once), for `info`.
     std::vector<std::shared_ptr<const TextureStorage>> textures;

@@ -5,6 +5,7 @@
 #include "freezeray/agreement.hpp"
 #include "freezeray/image.hpp"
 #include "freezeray/integrator.hpp"
+#include "freezeray/run_plan.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -126,21 +127,14 @@ struct Comparison {
 
 class Registry;
 
-// A comparison's run, INTEGRATOR, INTEGRATOR@SAMPLER, INTEGRATOR@LIGHT_SAMPLER or
-// INTEGRATOR@SAMPLER@LIGHT_SAMPLER: the
-// integrator, and the sampler and light sampler it names (each empty when the run names none).
-// Each name after an @ must be a registered sampler or light sampler (InputError otherwise).
-struct RunName {
-    std::string integrator, sampler, light_sampler;
-};
-RunName parse_run_name(const std::string& run, const Registry& registry);
-
 // What `compare` is asked to do (plain data, parsed in cli.cpp).
 struct CompareRequest {
     std::string scene;
     std::vector<std::string> integrators;  // run names (RunName): an integrator, @ a sampler, @ a light sampler
-    std::string sampler;                   // the runs' sampler where they name none (empty: the default)
-    std::string light_sampler;             // the runs' light sampler where they name none (empty: the default)
+    // The command line's selectors: the scene's kinds (--accel, --texture-layout) and the runs'
+    // (--sampler, --light-sampler) where a run names none of its own.
+    Selections selections;
+    OptionValues options;                  // the chapters' options, given to every run's integrator
     double time_seconds = 0.0;           // > 0: equal time
     std::uint64_t samples_per_pixel = 0; // > 0: equal samples (when no time is given)
     std::string reference;               // optional reference image
