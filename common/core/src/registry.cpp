@@ -51,10 +51,6 @@ const CatalogueBase& Registry::catalogue(CapabilityKind kind) const {
     throw std::logic_error("a capability kind without a catalogue");
 }
 
-CatalogueBase& Registry::catalogue(CapabilityKind kind) {
-    return const_cast<CatalogueBase&>(static_cast<const Registry&>(*this).catalogue(kind));
-}
-
 void Registry::add_area_light(int chapter, const std::string& summary, AreaLightFactory factory) {
     // Listed among the lights; made only here, for emissive triangles (the loader refuses "area"
     // in the "lights" array).

@@ -112,7 +112,6 @@ public:
 
     // A kind's catalogue, for what every kind does alike.
     const CatalogueBase& catalogue(CapabilityKind kind) const;
-    CatalogueBase& catalogue(CapabilityKind kind);
     bool has(CapabilityKind kind, const std::string& name) const { return catalogue(kind).has(name); }
     void require(CapabilityKind kind, const std::string& name, const std::string& where) const {
         catalogue(kind).require(name, where);
