@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -32,6 +33,9 @@ import exercises  # noqa: E402  (the shared modules beside this script)
 import make_student_copy  # noqa: E402
 
 TEST_TARGET = "exercise_tests"
+
+# What every stub calls (exercises.STUB_TEMPLATE), found in a file's text.
+STUB_CALL = "ExerciseNotImplemented("
 
 # What a build of the grading tests reads: a binary older than any of these is stale.
 BUILD_INPUTS = ("common", "chapters", "tests/exercises", "tests/support", "CMakeLists.txt", "cmake")
@@ -106,8 +110,10 @@ def assemble_graded_tree(teacher: Path, submission: Path, destination: Path) -> 
             for region in by_file[path]:
                 graded[region.name] = bodies.get(region.name)
                 (tree.taken if region.name in bodies else tree.missing).append(region.name)
-            if any(region.name not in bodies for region in by_file[path]) and \
-                    not make_student_copy.includes_error_header(origin.resolve(), roots):
+            # A stub needs ExerciseNotImplemented's header: the teacher's file may not include it,
+            # whether the stub is ours (a missing region) or the student's (an unfinished one,
+            # as their student copy gave it to them; the include it came with lies outside the region).
+            if STUB_CALL in text and not make_student_copy.includes_error_header(origin.resolve(), roots):
                 text = make_student_copy.add_error_include(text)
             content = text.encode("utf-8")
         tree.written += make_student_copy.write_if_changed(destination / path, content, origin.stat().st_mode)
@@ -166,10 +172,29 @@ def read_cmake_cache(build_dir: Path) -> dict[str, str]:
     return entries
 
 
+# A compiler's diagnostic: "path/file.cpp:12:5: error: ..." (GCC and Clang; "fatal error" too).
+COMPILER_ERROR = re.compile(r"^\S[^:]*:\d+(?::\d+)?:\s+(?:fatal )?error:")
+# A progress line of the build tool ("[ 5%] Building CXX object .../error.cpp.o"): never a reason.
+PROGRESS_LINE = re.compile(r"^\s*\[\s*\d+%\]|^\s*(?:g?make|ninja)(?:\[\d+\])?:")
+
+
 def first_error(log: str) -> str:
-    """The first line of a build log that says error (the one to fix first)."""
-    for line in log.splitlines():
-        if "error" in line.lower() and not line.lstrip().startswith(("make", "gmake", "ninja")):
+    """The error to fix first: the first compiler diagnostic, else CMake's error (with the line
+    after it, which says what), else the linker's, else the first line that says "error:" and is
+    not the build tool's progress (a source file may be called error.cpp)."""
+    lines = log.splitlines()
+    for line in lines:
+        if COMPILER_ERROR.match(line.strip()):
+            return line.strip()
+    for index, line in enumerate(lines):
+        if line.startswith("CMake Error"):
+            following = next((l.strip() for l in lines[index + 1:index + 4] if l.strip()), "")
+            return f"{line.strip()} {following}".strip()
+    for line in lines:
+        if "undefined reference" in line or "ld returned" in line or "cannot find -l" in line:
+            return line.strip()
+    for line in lines:
+        if "error:" in line.lower() and not PROGRESS_LINE.match(line):
             return line.strip()
     return "the build failed (see the log)"
 

@@ -14,6 +14,7 @@ import io
 import json
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 import time
@@ -24,7 +25,10 @@ from pathlib import Path
 sys.dont_write_bytecode = True
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+import exercises  # noqa: E402
 import grade  # noqa: E402
+import make_student_copy  # noqa: E402
+import submission  # noqa: E402
 from test_grading_tools import ERROR_HPP, write_tree  # noqa: E402  (the synthetic trees' helpers)
 
 WARPS_HPP = """\
@@ -236,6 +240,66 @@ class TeacherMode(unittest.TestCase):
         self.assertEqual(status, 0, err)
         self.assertIn("FAIL (does not compile)", out)
         self.assertIn("error", out)
+
+
+REPOSITORY = HERE.parent.parent
+
+
+class OwnExercises(unittest.TestCase):
+    """Teacher mode on this repository's own exercises, as a class hands them in: a student copy
+    with some regions solved and the rest left as their stubs (which the student copy gave with an
+    include outside the region, which teacher mode does not take)."""
+
+    def test_every_stubbed_file_of_the_graded_tree_includes_what_its_stub_needs(self):
+        regions = exercises.find_regions(REPOSITORY)
+        self.assertGreater(len(regions), 20)
+        with tempfile.TemporaryDirectory() as temporary:
+            student = Path(temporary) / "student"
+            make_student_copy.make_student_copy(REPOSITORY, student)
+            # The student solves chapter 06's exercises (the teacher's bodies) and leaves the rest.
+            solved = [r for r in regions if r.name.startswith("ch06/")]
+            self.assertTrue(solved)
+            for path in {r.path for r in solved}:
+                (student / path).write_bytes((REPOSITORY / path).read_bytes())
+            graded = submission.assemble_graded_tree(REPOSITORY, student, Path(temporary) / "graded")
+            self.assertEqual(set(graded.taken), {r.name for r in regions})  # every region is there, stubbed or solved
+            roots = make_student_copy.include_roots(graded.source)
+            stubbed = sorted({r.path for r in regions if not r.name.startswith("ch06/")})
+            lacking = [p.as_posix() for p in stubbed
+                       if submission.STUB_CALL in (graded.source / p).read_text(encoding="utf-8")
+                       and not make_student_copy.includes_error_header((graded.source / p).resolve(), roots)]
+            self.assertEqual(lacking, [], "stubbed files that would not compile: ExerciseNotImplemented undeclared")
+            # And they compile: the stubbed files whose own sources do not include the header.
+            compiler = shutil.which("g++") or shutil.which("c++")
+            if compiler is None:
+                self.skipTest("no C++ compiler")
+            needing = [p for p in stubbed if p.suffix == ".cpp" and not make_student_copy.includes_error_header(
+                (REPOSITORY / p).resolve(), make_student_copy.include_roots(REPOSITORY))][:2]
+            self.assertTrue(needing, "no exercise file lacks the header of its own: the check above proves nothing")
+            includes = [f"-I{folder}" for folder in roots]
+            for path in needing:
+                result = subprocess.run([compiler, "-std=c++20", "-fsyntax-only", "-DGLM_ENABLE_EXPERIMENTAL", *includes,
+                                         str(graded.source / path)], capture_output=True, text=True)
+                self.assertEqual(result.returncode, 0, f"{path}: {submission.first_error(result.stderr)}")
+
+
+class BuildFailureReason(unittest.TestCase):
+    """The reason shown for a failed build is the compiler's first error, not a progress line."""
+
+    def test_a_progress_line_naming_error_cpp_is_not_the_reason(self):
+        log = ("[  5%] Building CXX object common/CMakeFiles/freezeray_core.dir/core/src/error.cpp.o\n"
+               "[ 40%] Building CXX object chapters/06-kd-tree/CMakeFiles/x.dir/src/kdtree_build.cpp.o\n"
+               "/work/chapters/06-kd-tree/src/kdtree_build.cpp:42:5: error: 'sah' was not declared in this scope\n"
+               "gmake[2]: *** [x] Error 1\n")
+        self.assertEqual(submission.first_error(log),
+                         "/work/chapters/06-kd-tree/src/kdtree_build.cpp:42:5: error: 'sah' was not declared in this scope")
+
+    def test_cmake_and_linker_errors_are_named(self):
+        self.assertIn("does not exist", submission.first_error("CMake Error at CMakeLists.txt:3 (add_subdirectory):\n"
+                                                               "  The source directory ... does not exist.\n"))
+        self.assertIn("undefined reference", submission.first_error(
+            "[ 90%] Linking CXX executable ch06\n/usr/bin/ld: a.o: undefined reference to `f()'\n"))
+        self.assertEqual(submission.first_error("[  5%] Building CXX object error.cpp.o\n"), "the build failed (see the log)")
 
 
 if __name__ == "__main__":
