@@ -530,3 +530,47 @@ TEST_CASE("the report says which run disagrees with the others, which agree", "[
     CHECK_THAT(markdown, Catch::Contains("pt-nee disagrees with every other run, far more than they disagree among themselves"));
     CHECK(markdown.find("pt-mis disagrees with every other run") == std::string::npos);
 }
+
+TEST_CASE("a run the agreement tests call unconverged wins nothing, however low its own estimate", "[unit][report]") {
+    // Without a reference, a third run that has missed half the light (its image half as bright)
+    // with the lowest estimated relMSE of all: its variance knows nothing of what it missed.
+    TemporaryFolder temporary;
+    Comparison comparison = make_comparison(false);
+    IntegratorRun odd = make_run("pt-nee", reference_image(), false, 0.02f, 0.002, 6, 3);
+    for (std::size_t i = 0; i < odd.result.image.pixel_count(); ++i) {
+        odd.result.image[i] *= 0.5f;
+        odd.result.variance[i] *= 0.25f;
+    }
+    odd.result.estimated_relative_mse = 1e-7;
+    odd.efficiency = 1.0 / (odd.result.estimated_relative_mse * odd.result.seconds);
+    comparison.runs.push_back(odd);
+    comparison.agreements = pairwise_agreements(comparison.runs);
+    write_comparison_report(comparison, temporary.file("report"));
+    const std::string markdown = read_text(temporary.file("report/report.md"));
+    // The verdict names the best of the others, and says why pt-nee is left out.
+    CHECK_THAT(markdown, Catch::Contains("**Verdict.** pt-mis has the lowest relMSE"));
+    CHECK_THAT(markdown, Catch::Contains("pt-nee is left out"));
+    CHECK_THAT(markdown, Catch::Contains("estimated from each run's own per-pixel variance"));
+    // Its row: marked, never bold.
+    const std::vector<std::string> row = markdown_row(markdown, "## Results", "pt-nee");
+    REQUIRE(row.size() >= 6);
+    CHECK(std::none_of(row.begin(), row.end(), [](const std::string& cell) { return cell.find("**") != std::string::npos; }));
+    CHECK_THAT(row[4], Catch::Contains("‡"));
+    const std::string html = read_text(temporary.file("report/report.html"));
+    CHECK(count(html, "<span class=\"star\">") >= 1);
+    CHECK_THAT(html, Catch::Contains("pt-nee is left out"));
+}
+
+TEST_CASE("the verdict names the winner by the measured error and the ratio to the runner-up", "[unit][report]") {
+    const Comparison comparison = make_comparison();
+    const double a = comparison.runs[1].relative_mse, b = comparison.runs[0].relative_mse;
+    REQUIRE(a < b);
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.3g×", b / a);
+    TemporaryFolder temporary;
+    write_comparison_report(comparison, temporary.file("report"));
+    const std::string markdown = read_text(temporary.file("report/report.md"));
+    CHECK_THAT(markdown, Catch::Contains("**Verdict.** pt-mis has the lowest relMSE"));
+    CHECK_THAT(markdown, Catch::Contains(std::string(ratio) + " lower"));
+    CHECK(markdown.find("left out") == std::string::npos);
+}

@@ -3,6 +3,7 @@
 
 #include "commands.hpp"
 
+#include "freezeray/agreement.hpp"
 #include "freezeray/chapter_options_cli.hpp"
 #include "freezeray/comparison.hpp"
 #include "freezeray/error.hpp"
@@ -163,6 +164,7 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
     write_comparison_report(comparison, request.out_folder);
     int name_width = 12;  // the runs' names in one column, however long ("INTEGRATOR@SAMPLER")
     for (const IntegratorRun& run : comparison.runs) name_width = std::max(name_width, static_cast<int>(run.integrator.size()));
+    const std::optional<std::size_t> unconverged = odd_one_out(comparison.agreements, comparison.runs.size());
     for (const IntegratorRun& run : comparison.runs) {
         char slope[48] = "no fit";
         if (run.fit.has_interval())
@@ -173,6 +175,10 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
                      static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, run.relative_mse,
                      run.error_is_estimated ? " (estimated)" : "", slope);
         for (const std::string& w : run.result.warnings) std::fprintf(stderr, "warning: %s: %s\n", run.integrator.c_str(), w.c_str());
+        if (unconverged && &comparison.runs[*unconverged] == &run)
+            std::fprintf(stderr, "%s has not converged: its image disagrees with every other run's far beyond their "
+                                 "noise, so its relMSE above is not its error (the report leaves it unranked)\n",
+                         run.integrator.c_str());
     }
     std::cout << request.out_folder << "/report.html\n";
     return 0;

@@ -90,6 +90,7 @@ MetricsTable metrics_table(const Comparison& comparison) {
     const bool compares_error[] = {false, false, false, true, false, true};  // measured and estimated differ
 
     std::vector<std::vector<double>> values;  // per row, per column; negative: none
+    const std::optional<std::size_t> unconverged = unconverged_run(comparison);
     for (const IntegratorRun& run : comparison.runs) {
         const double seconds = run.result.seconds;
         const double relative = shown_relative_mse(run);
@@ -104,12 +105,14 @@ MetricsTable metrics_table(const Comparison& comparison) {
         TableRow row;
         row.integrator = run.integrator;
         row.estimated = run.error_is_estimated;
+        row.not_converged = unconverged && *unconverged == table.rows.size();
         for (std::size_t column = 0; column < values.back().size(); ++column) {
             const double value = values.back()[column];
             std::string text = column == 0 ? std::to_string(run.result.samples_per_pixel) : format_number(value);
             if (column == 3 && run.error_is_estimated && has_value(value)) text += " (estimated)";
             if (column == 3 && below_floor) text = "< " + format_number(floor) + " †";
             if (column == 5 && below_floor && seconds > 0.0) text = "> " + format_number(1.0 / (floor * seconds)) + " †";
+            if (row.not_converged && column >= 2 && has_value(value)) text += " ‡";
             row.cells.push_back({text, false});
         }
         table.rows.push_back(row);
@@ -121,7 +124,8 @@ MetricsTable metrics_table(const Comparison& comparison) {
         if (better[column] == Better::Nowhere) continue;
         std::vector<std::size_t> candidates;
         for (std::size_t row = 0; row < table.rows.size(); ++row) {
-            const bool comparable = !compares_error[column] || !any_measured || !table.rows[row].estimated;
+            const bool comparable = (!compares_error[column] || !any_measured || !table.rows[row].estimated) &&
+                                    !table.rows[row].not_converged;  // ‡ wins nothing
             if (comparable && has_value(values[row][column])) candidates.push_back(row);
         }
         if (candidates.size() < 2) continue;
@@ -310,6 +314,61 @@ CropErrorTable crop_error_table(const Comparison& comparison, const CropRegion& 
     table.mse = cells(mse_values);
     table.relative_mse = cells(relative_values);
     return table;
+}
+
+std::optional<std::size_t> unconverged_run(const Comparison& comparison) {
+    return odd_one_out(comparison.agreements, comparison.runs.size());
+}
+
+std::string verdict(const Comparison& comparison) {
+    const std::optional<std::size_t> unconverged = unconverged_run(comparison);
+    const bool any_measured = std::any_of(comparison.runs.begin(), comparison.runs.end(),
+                                          [](const IntegratorRun& run) { return !run.error_is_estimated; });
+    const double floor = reference_floor(comparison.reference_relative_mse);
+    std::vector<std::size_t> candidates;  // comparable runs with an error, best first
+    for (std::size_t i = 0; i < comparison.runs.size(); ++i) {
+        const IntegratorRun& run = comparison.runs[i];
+        if (unconverged && *unconverged == i) continue;
+        if (any_measured && run.error_is_estimated) continue;
+        if (!(shown_relative_mse(run) > 0.0)) continue;
+        candidates.push_back(i);
+    }
+    std::string left_out;
+    if (unconverged)
+        left_out = " " + comparison.runs[*unconverged].integrator +
+                   " is left out: its images disagree with every other run's far beyond their noise, so its own "
+                   "error estimate cannot be trusted (it has not converged).";
+    if (candidates.size() < 2) return left_out.empty() ? "" : "No verdict:" + left_out;
+    std::sort(candidates.begin(), candidates.end(), [&](std::size_t a, std::size_t b) {
+        return shown_relative_mse(comparison.runs[a]) < shown_relative_mse(comparison.runs[b]);
+    });
+    const IntegratorRun& first = comparison.runs[candidates[0]];
+    const IntegratorRun& second = comparison.runs[candidates[1]];
+    const double a = shown_relative_mse(first), b = shown_relative_mse(second);
+    const std::string how = comparison.equal_time ? "at equal time" : "at equal samples";
+    std::string text;
+    if (floor > 0.0 && b < floor) {
+        text = "No winner can be named: " + first.integrator + " and " + second.integrator +
+               " both lie below what the reference can measure (relMSE " + format_number(floor) + ").";
+    } else {
+        const double ratio = b / a;
+        char sentence[400];
+        std::snprintf(sentence, sizeof sentence, "%s has the lowest relMSE %s: %s against %s's %s, %.3g× lower%s.",
+                      first.integrator.c_str(), how.c_str(),
+                      (floor > 0.0 && a < floor ? "< " + format_number(floor) : format_number(a)).c_str(),
+                      second.integrator.c_str(), format_number(b).c_str(), ratio,
+                      floor > 0.0 && a < floor ? " at least (the reference cannot measure below its floor)" : "");
+        text = sentence;
+        if (ratio < 1.5)
+            text += " That is within what a second run with another seed could reverse: one run each is no measure "
+                    "of the spread; repeat with other --seed values before calling it.";
+        else
+            text += " Each number is one run; other --seed values show the spread.";
+    }
+    if (!any_measured)
+        text += " The errors are estimated from each run's own per-pixel variance, which sees no light a run has not "
+                "found yet: check against a --reference.";
+    return text + left_out;
 }
 
 std::vector<std::string> integrator_notes(const Comparison& comparison) {

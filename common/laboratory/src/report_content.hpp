@@ -59,6 +59,9 @@ struct Cell {
 struct TableRow {
     std::string integrator;
     bool estimated = false;
+    // The agreement tests say this run has not converged (unconverged_run): its error columns
+    // are marked ‡, and none of its columns is starred, whatever its own estimate says.
+    bool not_converged = false;
     std::vector<Cell> cells;  // one per MetricsTable::headers
 };
 
@@ -71,6 +74,16 @@ struct MetricsTable {
 // lowest time (at equal samples only), MSE and relMSE; highest SSIM and efficiency (only when
 // two runs or more have a value; a measured relMSE is never compared with an estimated one).
 MetricsTable metrics_table(const Comparison& comparison);
+
+// The run the agreement tests name as not converged (odd_one_out over the runs' pairwise
+// agreements), if any: its own error estimate is contradicted, and it wins nothing.
+std::optional<std::size_t> unconverged_run(const Comparison& comparison);
+
+// The report's verdict in one or two sentences: which run has the lowest error (measured
+// against the reference, else estimated, and then said to be so), by how much against the
+// runner-up, what the number rests on (one run each), and which run was left out as not
+// converged. Empty with fewer than two comparable runs.
+std::string verdict(const Comparison& comparison);
 
 // Times to reach each target relMSE: targets in the order the runs give them, and per run one
 // text per target ("3.21 s (measured)", "41.2 s (along slope −1)", "> 10× budget (not

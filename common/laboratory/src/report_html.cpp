@@ -101,7 +101,10 @@ std::string facts_and_reading(const Comparison& comparison, const Layout& layout
 
 std::string metrics_section(const Comparison& comparison) {
     const MetricsTable table = metrics_table(comparison);
-    std::string html = "<h2>Results</h2>\n<table class=\"metrics\">\n<tr><th>integrator</th>";
+    std::string html = "<h2>Results</h2>\n";
+    if (const std::string v = verdict(comparison); !v.empty())
+        html += "<p class=\"verdict\"><strong>Verdict.</strong> " + escape_xml(v) + "</p>\n";
+    html += "<table class=\"metrics\">\n<tr><th>integrator</th>";
     for (const std::string& header : table.headers) html += "<th>" + escape_xml(header) + "</th>";
     html += "</tr>\n";
     for (std::size_t i = 0; i < table.rows.size(); ++i) {
@@ -115,7 +118,11 @@ std::string metrics_section(const Comparison& comparison) {
         }
         html += "</tr>\n";
     }
-    return html + "</table>\n<p>★ the best of its column.</p>\n";
+    html += "</table>\n<p>★ the best of its column.";
+    if (std::any_of(table.rows.begin(), table.rows.end(), [](const TableRow& r) { return r.not_converged; }))
+        html += " ‡ the agreement tests say this run has not converged; its error is not what it estimates, and it is "
+                "not ranked.";
+    return html + "</p>\n";
 }
 
 std::string plot_and_accuracy(const Comparison& comparison, const Layout& layout) {

@@ -2,6 +2,8 @@
 // viewer. Images are links to the files in images/; the best value of a column is in bold.
 #include "report_content.hpp"
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -36,13 +38,19 @@ std::string metrics_section(const Comparison& comparison) {
     const MetricsTable table = metrics_table(comparison);
     std::vector<std::string> header = {"integrator"};
     header.insert(header.end(), table.headers.begin(), table.headers.end());
-    std::string text = "## Results\n\n" + table_row(header) + table_rule(header.size(), "--:");
+    std::string text = "## Results\n\n";
+    if (const std::string v = verdict(comparison); !v.empty()) text += "**Verdict.** " + v + "\n\n";
+    text += table_row(header) + table_rule(header.size(), "--:");
     for (const TableRow& row : table.rows) {
         std::vector<std::string> cells = {cell_text(row.integrator)};
         for (const Cell& cell : row.cells) cells.push_back(cell.best ? "**" + cell.text + "**" : cell.text);
         text += table_row(cells);
     }
-    return text + "\n**Bold**: the best of its column.\n\n";
+    text += "\n**Bold**: the best of its column.";
+    if (std::any_of(table.rows.begin(), table.rows.end(), [](const TableRow& r) { return r.not_converged; }))
+        text += " ‡: the agreement tests say this run has not converged; its error is not what it estimates, and it "
+                "is not ranked.";
+    return text + "\n\n";
 }
 
 std::string plot_section(const Comparison& comparison, const Layout& layout) {
