@@ -73,6 +73,15 @@ else
     fail "resuming with another seed: unclear refusal: $(cat "$work/log")"
 fi
 
+# 6b. Resuming with no more samples than the saved render has is refused, and writes nothing.
+if render --seed 5 --spp 1 --out "$work/f.pfm" --resume "$work/d.pfm.state" >/dev/null 2>"$work/log"; then
+    fail "resuming with fewer samples than saved was accepted"
+elif grep -q -- "--spp" "$work/log" && grep -q "already has" "$work/log" && [ ! -e "$work/f.pfm" ]; then
+    ok "resuming with fewer samples than saved is refused: $(cat "$work/log")"
+else
+    fail "resuming with fewer samples: unclear refusal: $(cat "$work/log")"
+fi
+
 # 7. Merging two halves of one seed's samples equals the whole within rounding.
 render --seed 5 --spp 64 --out "$work/half1.exr" >/dev/null 2>&1
 render --seed 5 --spp 64 --sample-offset 64 --out "$work/half2.exr" >/dev/null 2>&1

@@ -38,10 +38,11 @@ bool same_images(const Image& a, const Image& b) {
 TEST_CASE("a render state round-trips exactly and refuses foreign or truncated files", "[unit][state]") {
     TemporaryFolder folder;
     const Film film = random_film(5, 3, 7, 1);
-    const RenderStateInfo info{"scene.json", "pt-mis", "independent", 42, 16, 10, 5, 3, "bvh"};
+    const RenderStateInfo info{"scene.json", "pt-mis", "independent", 42, 16, 10, 5, 3, "bvh", 12.5};
     write_render_state(folder.file("a.state"), info, film);
     const RenderState read = read_render_state(folder.file("a.state"));
     CHECK(read.info.seed == 42u);
+    CHECK(read.info.seconds == 12.5);  // the time spent so far: a resumed render's image records the total
     CHECK(read.info.first_sample == 16u);
     CHECK(read.info.light_sampler == "bvh");
     CHECK(same_images(read.film->mean(), film.mean()));

@@ -151,7 +151,7 @@ int run_render(const RenderOptions& options, const Registry& registry) {
 
     const std::string out = options.out.empty() ? default_output_path(options.scene, integrator_name) : options.out;
     check_image_writable(out);  // before hours of rendering, not after
-    const RenderStateInfo info{options.scene,     integrator_name,       plan.sampler_name,
+    RenderStateInfo info{options.scene,     integrator_name,       plan.sampler_name,
                                settings.seed,     settings.first_sample, settings.max_depth,
                                scene.camera->width(), scene.camera->height(), plan.light_sampler_name};
     if (!options.resume.empty()) {
@@ -161,7 +161,15 @@ int run_render(const RenderOptions& options, const Registry& registry) {
                                          "more samples with another --seed or --sample-offset and `merge` the renders");
         const RenderState saved = read_render_state(options.resume);
         check_resumable(saved.info, info);
+        const std::uint64_t saved_samples = saved.film->minimum_sample_count();
+        const bool counted = settings.time_seconds <= 0.0 && settings.target_error <= 0.0;
+        if (counted && saved_samples >= settings.samples_per_pixel)
+            throw InputError(options.spp_given ? "--spp" : "--resume",
+                             "the saved render already has " + std::to_string(saved_samples) +
+                                 " samples in every pixel and this one asks for " +
+                                 std::to_string(settings.samples_per_pixel) + ": nothing to add (ask for more with --spp)");
         settings.resume = saved.film;
+        info.seconds = saved.info.seconds;  // the time already spent; this run's is added to it
     }
 
     // BOOK(checkpoints)
@@ -173,8 +181,10 @@ int run_render(const RenderOptions& options, const Registry& registry) {
         settings.on_pass = [&](const Film& film, std::uint64_t, double seconds) {
             const auto now = std::chrono::steady_clock::now();
             if (std::chrono::duration<double>(now - last_checkpoint).count() < options.checkpoint_seconds) return;
-            write_render_state(state_path_for(out), info, film);
-            write_image(out, annotated_image(film, info, seconds, false), {options.exposure});
+            RenderStateInfo so_far = info;
+            so_far.seconds += seconds;
+            write_render_state(state_path_for(out), so_far, film);
+            write_image(out, annotated_image(film, so_far, so_far.seconds, false), {options.exposure});
             last_checkpoint = now;
         };
     }
@@ -193,7 +203,8 @@ int run_render(const RenderOptions& options, const Registry& registry) {
     // An integrator that handed the render to another (auto) names the one that made the image.
     RenderStateInfo made_by = info;
     if (!result.integrator.empty()) made_by.integrator = result.integrator;
-    Image final_image = annotated_image(*result.film, made_by, result.seconds, result.interrupted);
+    made_by.seconds += result.seconds;
+    Image final_image = annotated_image(*result.film, made_by, made_by.seconds, result.interrupted);
     if (!result.integrator_choice.empty()) final_image.metadata["freezeray:integrator_choice"] = result.integrator_choice;
     write_image(out, final_image, {options.exposure});
     write_extra_images(result, "", options.exposure);

@@ -18,7 +18,8 @@ namespace {
 nlohmann::json to_json(const RenderStateInfo& info) {
     return {{"scene", info.scene}, {"integrator", info.integrator}, {"sampler", info.sampler}, {"seed", info.seed},
             {"first_sample", info.first_sample}, {"max_depth", info.max_depth},
-            {"width", info.width}, {"height", info.height}, {"light_sampler", info.light_sampler}};
+            {"width", info.width}, {"height", info.height}, {"light_sampler", info.light_sampler},
+            {"seconds", info.seconds}};
 }
 
 }  // namespace
@@ -62,6 +63,7 @@ RenderState read_render_state(const std::string& path) {
         state.info.max_depth = j.at("max_depth").get<int>();
         state.info.width = j.at("width").get<int>();
         state.info.height = j.at("height").get<int>();
+        if (j.contains("seconds")) state.info.seconds = j.at("seconds").get<double>();
     } catch (const nlohmann::json::exception&) {
         throw InputError(path, "is not a FreezeRay render state (its first line is not the expected header)");
     }

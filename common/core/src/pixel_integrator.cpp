@@ -79,11 +79,11 @@ RenderResult render_pixels(const Scene& scene, const RenderSettings& settings, P
         thread_samplers(settings.sampler ? *settings.sampler : independent, settings, threads, width, height);
     auto start = std::chrono::steady_clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    progress.start("render", by_time ? 0 : sample_cap * width * height, settings.time_seconds);
-
     RenderResult result;
     std::uint64_t samples_this_run = 0;  // samples per pixel added by this call (for timing)
-    std::uint64_t done = film.minimum_sample_count();  // samples every pixel has
+    std::uint64_t done = film.minimum_sample_count();  // samples every pixel has (a resumed film's too)
+    // The progress counts this call's work only: a resumed film's samples are not this run's speed.
+    progress.start("render", by_time ? 0 : (sample_cap - std::min(done, sample_cap)) * width * height, settings.time_seconds);
     while (done < sample_cap && !result.interrupted) {
         const std::uint64_t pass = next_pass_size(done, sample_cap, samples_this_run, elapsed(), settings);
         const std::uint64_t target = done + pass;

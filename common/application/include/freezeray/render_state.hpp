@@ -21,6 +21,10 @@ struct RenderStateInfo {
     // Chapters 03 and 10; empty for an integrator that chooses no light at shading points (and in
     // states written before light samplers were named).
     std::string light_sampler;
+    // The render time of the samples in the film, over every run that added to it (a resumed
+    // render's image records the total); not compared when resuming. States written before it
+    // was kept say 0.
+    double seconds = 0.0;
 };
 
 struct RenderState {
