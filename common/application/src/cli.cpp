@@ -171,9 +171,11 @@ int run_compare(CompareRequest request, const std::vector<std::string>& crops, c
             std::snprintf(slope, sizeof slope, "slope %.2f (%.2f to %.2f)", run.fit.slope, run.fit.slope_low, run.fit.slope_high);
         else if (run.fit.points > 0)
             std::snprintf(slope, sizeof slope, "slope %.2f (no interval)", run.fit.slope);
-        std::fprintf(stderr, "%-*s %8llu spp %8.2f s  relMSE %-10.4g%s  %s\n", name_width, run.integrator.c_str(),
-                     static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, run.relative_mse,
-                     run.error_is_estimated ? " (estimated)" : "", slope);
+        char error[32] = "none";  // no reference and no per-pixel variance: no estimate, not -1
+        if (run.relative_mse >= 0.0) std::snprintf(error, sizeof error, "%.4g", run.relative_mse);
+        std::fprintf(stderr, "%-*s %8llu spp %8.2f s  relMSE %-10s%s  %s\n", name_width, run.integrator.c_str(),
+                     static_cast<unsigned long long>(run.result.samples_per_pixel), run.result.seconds, error,
+                     run.error_is_estimated && run.relative_mse >= 0.0 ? " (estimated)" : "", slope);
         for (const std::string& w : run.result.warnings) std::fprintf(stderr, "warning: %s: %s\n", run.integrator.c_str(), w.c_str());
         if (unconverged && &comparison.runs[*unconverged] == &run)
             std::fprintf(stderr, "%s has not converged: its image disagrees with every other run's far beyond their "

@@ -171,11 +171,17 @@ ConvergenceFit fit_convergence(const std::vector<Checkpoint>& checkpoints, doubl
 // BOOK(time-to-accuracy)
 std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& checkpoints,
                                               const std::vector<double>& targets, double reference_relative_mse) {
-    // The line of slope -1 through the checkpoints: log10(relMSE x seconds) is constant along it,
-    // and its median over the checkpoints places it (robust to a firefly, as the fit is).
-    const LogPoints p = log_points(checkpoints, reference_relative_mse);
-    std::vector<double> products;
-    for (std::size_t i = 0; i < p.x.size(); ++i) products.push_back(p.x[i] + p.y[i]);
+    // Where the run ended: its last checkpoint with an error. Beyond it the time is read along the
+    // run's own fitted slope (the rate it was actually converging at), or along -1, the unbiased
+    // rate, when there is no fit; an error that does not fall is never read forward.
+    const ConvergenceFit fit = fit_convergence(checkpoints, reference_relative_mse);
+    const double slope = fit.points > 0 ? fit.slope : -1.0;
+    double end_seconds = 0.0, end_error = 0.0;
+    for (const Checkpoint& c : checkpoints)
+        if (const double error = checkpoint_error(c, reference_relative_mse); error > 0.0 && c.seconds > 0.0) {
+            end_seconds = c.seconds;
+            end_error = error;
+        }
     const double run_seconds = checkpoints.empty() ? 0.0 : checkpoints.back().seconds;
     std::vector<TimeToAccuracy> result;
     for (double target : targets) {
@@ -187,8 +193,10 @@ std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& che
             result.push_back(t);
             continue;
         }
-        t.seconds = products.empty() ? std::numeric_limits<double>::infinity()
-                                     : std::pow(10.0, median(products) - std::log10(target));
+        t.slope = slope;
+        t.seconds = end_error > 0.0 && slope < 0.0
+                        ? end_seconds * std::pow(target / end_error, 1.0 / slope)  // error ~ seconds^slope
+                        : std::numeric_limits<double>::infinity();
         // Measured: the first checkpoint at or below the target, interpolated log-linearly from
         // the one before it.
         for (std::size_t i = 0; i < checkpoints.size(); ++i) {
@@ -208,8 +216,7 @@ std::vector<TimeToAccuracy> times_to_accuracy(const std::vector<Checkpoint>& che
             }
         }
         // Read beyond ExtrapolationLimit times the run's time, the line is a guess, not a figure.
-        if (!t.measured && std::isfinite(t.seconds))
-            t.beyond_limit = !(t.seconds <= TimeToAccuracy::ExtrapolationLimit * run_seconds);
+        if (!t.measured) t.beyond_limit = !(t.seconds <= TimeToAccuracy::ExtrapolationLimit * run_seconds);
         result.push_back(t);
     }
     return result;

@@ -159,24 +159,25 @@ AccuracyTable accuracy_table(const Comparison& comparison) {
                 texts.push_back("† reference too noisy");
             } else if (time == run.time_to_accuracy.end() || std::isnan(time->seconds)) {
                 texts.push_back("—");
-            } else if (std::isinf(time->seconds)) {
-                texts.push_back("never (no checkpoint to read)");
             } else if (time->measured) {
                 texts.push_back(format_number(time->seconds) + " s (measured)");
+            } else if (!(time->slope < 0.0) && !std::isfinite(time->seconds)) {
+                texts.push_back("not reached; its error does not fall");
+            } else if (std::isinf(time->seconds)) {
+                texts.push_back("not reached; no checkpoint to read");
             } else if (time->beyond_limit) {
-                texts.push_back("> " + format_number(TimeToAccuracy::ExtrapolationLimit) + "× budget (not measured)");
-            } else if (run.fit.disagrees_with_unbiased_rate()) {
-                texts.push_back(format_number(time->seconds) + " s along slope −1, which its fit contradicts");
+                texts.push_back("not reached within the run; beyond " + format_number(TimeToAccuracy::ExtrapolationLimit) +
+                                "× its time not estimated");
             } else {
-                texts.push_back(format_number(time->seconds) + " s (along slope −1)");
+                texts.push_back(format_number(time->seconds) + " s (along its slope " + format_slope(time->slope) + ")");
             }
         }
         table.rows.emplace_back(run.integrator, texts);
     }
-    table.note = "Measured: the run reached the target (interpolated between the checkpoints around it). Along "
-                 "slope −1: read along the line an unbiased estimator follows, through the run's checkpoints, and "
-                 "given as a number only up to " + format_number(TimeToAccuracy::ExtrapolationLimit) +
-                 "× the run's time; where the run's own fitted slope excludes −1, that reading is not to be trusted.";
+    table.note = "Measured: the run reached the target (interpolated between the checkpoints around it). Along its "
+                 "slope: read forward from where the run ended, along the slope fitted to its passes (−1, the rate "
+                 "of an unbiased estimator, when there is no fit), and given as a number only up to " +
+                 format_number(TimeToAccuracy::ExtrapolationLimit) + "× the run's time; further out it is not estimated.";
     return table;
 }
 
@@ -257,11 +258,11 @@ std::vector<std::string> how_to_read(const Comparison& comparison) {
         "median of the slopes between pairs of points) to each pass's own samples, whose errors are independent "
         "(the checkpoints' are not: each image holds the samples of the one before), against the pass's own time "
         "— a pass of d seconds has the error a whole render of d seconds would have, so the line it gives runs "
-        "through the checkpoints; at least 4 passes spanning at least 4× in time; the table gives each slope's 95 % "
-        "interval; a slope whose interval excludes −1 shows fireflies "
+        "through the checkpoints; at least 4 passes spanning at least 4× in time; from 6 passes on, the table gives "
+        "each slope's 95 % interval (fewer give intervals too wide to say anything); a slope whose interval excludes −1 shows fireflies "
         "still being found, bias, or a reference that is itself not converged. "
         "Time to accuracy reads the curves at a target error: measured when the run got there, else read along "
-        "the line of slope −1 through its checkpoints, and given as a number only up to 10× the run's time.",
+        "its fitted slope from where it ended, and given as a number only up to 10× the run's time.",
         std::string("Best in each column is marked: ") + (comparison.equal_time ? "" : "lowest time, ") +
             "lowest MSE and relMSE; highest SSIM (structural similarity, 1 is identical) and efficiency."};
     if (!comparison.reference) {

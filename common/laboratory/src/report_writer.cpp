@@ -176,21 +176,26 @@ std::string convergence_csv(const Comparison& comparison) {
     return csv;
 }
 
-// time_to_accuracy.csv: one row per run and target, with the time read along slope -1 kept as a
-// number even where the report only says it lies beyond the extrapolation limit.
+// time_to_accuracy.csv: one row per run and target; the seconds are empty where the report has no
+// number (not reached and not estimated).
 std::string time_to_accuracy_csv(const Comparison& comparison) {
     std::string csv = "integrator,target_relative_mse,seconds,how\n";
     for (const IntegratorRun& run : comparison.runs) {
         for (const TimeToAccuracy& t : run.time_to_accuracy) {
-            const bool finite = std::isfinite(t.seconds);
-            char beyond[64];
-            std::snprintf(beyond, sizeof beyond, "along slope -1 (beyond %gx the run's time)",
-                          TimeToAccuracy::ExtrapolationLimit);
-            const std::string how = t.measured      ? "measured"
-                                    : !finite        ? "never"
-                                    : t.beyond_limit ? beyond
-                                                     : "along slope -1";
-            csv += csv_text(run.integrator) + "," + csv_number(t.target) + "," + csv_number(finite ? t.seconds : -1.0) +
+            const bool number = std::isfinite(t.seconds) && (t.measured || !t.beyond_limit);
+            char how[96];
+            if (t.measured)
+                std::snprintf(how, sizeof how, "measured");
+            else if (t.below_reference_floor)
+                std::snprintf(how, sizeof how, "below what the reference can measure");
+            else if (!std::isfinite(t.seconds))
+                std::snprintf(how, sizeof how, "not reached; its error does not fall");
+            else if (t.beyond_limit)
+                std::snprintf(how, sizeof how, "not reached; beyond %gx the run's time not estimated",
+                              TimeToAccuracy::ExtrapolationLimit);
+            else
+                std::snprintf(how, sizeof how, "along its slope %.2f", t.slope);
+            csv += csv_text(run.integrator) + "," + csv_number(t.target) + "," + (number ? csv_number(t.seconds) : "") +
                    "," + how + "\n";
         }
     }

@@ -58,6 +58,7 @@ double pass_error(const Checkpoint& checkpoint, double reference_relative_mse);
 // a reference that is itself not converged.
 struct ConvergenceFit {
     static constexpr int MinimumPoints = 4;          // points a fit needs
+    static constexpr int MinimumPointsForInterval = 6;  // and its 95 % interval (fewer: too wide to say anything)
     static constexpr double MinimumTimeSpan = 4.0;   // and the ratio of their longest to shortest time
 
     double slope = 0.0;
@@ -69,7 +70,7 @@ struct ConvergenceFit {
     // The relMSE the fitted line predicts after `seconds`.
     double predict(double seconds) const;
     // Whether the slope has a confidence interval (see from_passes).
-    bool has_interval() const { return points > 0 && from_passes; }
+    bool has_interval() const { return points >= MinimumPointsForInterval && from_passes; }
     // Whether -1, the unbiased rate, lies within the slope's confidence interval.
     bool agrees_with_unbiased_rate() const { return has_interval() && slope_low <= -1.0 && -1.0 <= slope_high; }
     // Whether the interval excludes -1 (false when there is no interval).
@@ -77,13 +78,15 @@ struct ConvergenceFit {
 };
 
 // When a run reaches a target relMSE: measured (interpolated between checkpoints) when it got
-// there; else read along the line of slope -1 through its checkpoints (the rate of an unbiased
-// estimator), which is shown as a number only within ExtrapolationLimit times the run's time.
+// there; else read forward from where the run ended (its last checkpoint) along the run's fitted
+// slope (along -1, the rate of an unbiased estimator, when there is no fit), and shown as a number
+// only within ExtrapolationLimit times the run's time. An error that does not fall is not read.
 struct TimeToAccuracy {
     static constexpr double ExtrapolationLimit = 10.0;
 
     double target = 0.0;
-    double seconds = 0.0;          // infinite when nothing was measured to read a line from
+    double seconds = 0.0;          // infinite when there is nothing to read forward (no error, or none falling)
+    double slope = -1.0;           // the slope read along when not measured
     bool measured = false;
     bool beyond_limit = false;     // extrapolated beyond ExtrapolationLimit x the run's time
     bool below_reference_floor = false;  // a target the reference is too noisy to measure
