@@ -34,7 +34,11 @@ make_references.py --images on the solution's tree (--references DIR).
 
 Gradebook output: --json FILE and --csv FILE hold the student id (--student), the time, the
 hash of the graded regions, per exercise its points, earned, result and reason, and per chapter
-the subtotals.
+the subtotals (long format, for scripts). --gradebook FILE is the one to hand back: one row per
+student, a column per exercise and per chapter, the total. --feedback DIR writes each student's
+report to DIR/STUDENT.txt. --batch ends with a class summary: totals, who did not compile, and
+each exercise's pass rate. When the build fails, only the exercises in the file the compiler
+stopped at are "does not compile"; the others are "not graded: FILE does not compile".
 
 Exit status: 0 whenever the report could be produced (a low grade, or code that does not
 compile, is a grade, not an error); 2 when it could not (no build folder, stale binary with
@@ -334,10 +338,38 @@ def build_rows(outcomes: dict[str, Outcome], region_names: list[str], default_po
     return rows
 
 
+# The file a compiler's error names: "path/file.cpp:12:5: error: ...".
+ERROR_FILE = re.compile(r"^(?P<file>\S[^:]*):\d+(?::\d+)?:\s+(?:fatal )?error:")
+
+
+def failing_file(error: str, source: Path | None) -> Path | None:
+    """The file the build's first error is in, relative to the graded tree when it lies inside it."""
+    match = ERROR_FILE.match(error.strip())
+    if match is None:
+        return None
+    path = Path(match["file"])
+    if source is not None and path.is_absolute():
+        try:
+            return path.resolve().relative_to(source.resolve())
+        except ValueError:
+            return path
+    return path
+
+
 def rows_for_build_failure(region_names: list[str], default_points: int, points: dict[str, int],
-                           chapter: str | None, only: str | None, error: str) -> list[Row]:
-    """Every exercise at zero when the grading tests do not compile: the error is the reason."""
-    outcomes = {name: Outcome("fail", "does not compile", error) for name in region_names}
+                           chapter: str | None, only: str | None, error: str,
+                           region_files: dict[str, Path] | None = None, source: Path | None = None) -> list[Row]:
+    """Every exercise at zero when the grading tests do not compile: the error is the reason. An
+    exercise whose own file is not the one that fails is marked as blocked by it, so that a student
+    sees which of their files to fix first and that the others were not judged."""
+    broken = failing_file(error, source)
+    outcomes = {}
+    for name in region_names:
+        own = (region_files or {}).get(name)
+        if broken is not None and own is not None and own != broken:
+            outcomes[name] = Outcome("fail", f"not graded: {broken.as_posix()} does not compile", error)
+        else:
+            outcomes[name] = Outcome("fail", "does not compile", error)
     return build_rows(outcomes, region_names, default_points, points, chapter, only)
 
 
@@ -416,6 +448,83 @@ def write_csv(path: Path, reports: list[Report]) -> None:
     partial.replace(path)
 
 
+def write_gradebook(path: Path, reports: list[Report]) -> None:
+    """The gradebook a teacher hands back: one row per student, a column per exercise and per
+    chapter (points earned), the total and its percentage, and the notes; written atomically."""
+    exercises_seen: list[str] = []
+    chapters_seen: list[str] = []
+    for report in reports:
+        for row in report.rows:
+            if row.exercise not in exercises_seen:
+                exercises_seen.append(row.exercise)
+            if row.chapter not in chapters_seen:
+                chapters_seen.append(row.chapter)
+    exercises_seen.sort()
+    chapters_seen.sort()
+    header = ["student", *exercises_seen, *(f"{c} total" for c in chapters_seen), "total", "possible", "percent",
+              "build", "time", "source_hash", "notes"]
+    partial = path.with_name(path.name + ".part")
+    with partial.open("w", newline="", encoding="utf-8") as file:
+        writer = csv.writer(file)
+        writer.writerow(header)
+        for report in reports:
+            earned = {row.exercise: str(row.earned) for row in report.rows}
+            totals = chapter_totals(report.rows)
+            total = sum(row.earned for row in report.rows)
+            possible = sum(row.points for row in report.rows)
+            compiles = not any("does not compile" in row.result for row in report.rows)
+            writer.writerow([report.student, *(earned.get(name, "") for name in exercises_seen),
+                             *(str(totals[c][0]) if c in totals else "" for c in chapters_seen),
+                             str(total), str(possible), percent(total, possible),
+                             "ok" if compiles else "does not compile", report.time, report.source_hash,
+                             "; ".join(report.notes)])
+    partial.replace(path)
+
+
+def write_feedback(folder: Path, reports: list[Report]) -> list[Path]:
+    """One text file per student with their report, as the terminal shows it; the paths written."""
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for index, report in enumerate(reports):
+        name = re.sub(r"[^A-Za-z0-9._-]", "_", report.student) or f"student-{index + 1}"
+        text = f"{report.student or 'this build'}  ({report.time}, sources {report.source_hash[:12]})\n\n"
+        text += format_report(report.rows) + "\n"
+        text += "".join(f"note: {note}\n" for note in report.notes)
+        if any(row.result.startswith("FAIL") and row.reason for row in report.rows):
+            text += ("\nA failing test says what it expected and what came; run the grader with --verbose, or the "
+                     "test alone with --only NAME --verbose, for its whole output.\n")
+        path = folder / f"{name}.txt"
+        partial = path.with_name(path.name + ".part")
+        partial.write_text(text, encoding="utf-8")
+        partial.replace(path)
+        written.append(path)
+    return written
+
+
+def class_summary(reports: list[Report]) -> str:
+    """The class at a glance: totals (mean, median, range), how many did not compile, and each
+    exercise's pass rate, hardest first."""
+    if not reports:
+        return ""
+    totals = sorted(sum(r.earned for r in report.rows) for report in reports)
+    possible = max((sum(r.points for r in report.rows) for report in reports), default=0)
+    n = len(totals)
+    median = totals[n // 2] if n % 2 else (totals[n // 2 - 1] + totals[n // 2]) / 2
+    broken = [r.student for r in reports if any("does not compile" in row.result for row in r.rows)]
+    lines = [f"class: {n} student{'s' if n != 1 else ''}, total out of {possible}: mean {sum(totals) / n:.1f}, "
+             f"median {median:g}, lowest {totals[0]}, highest {totals[-1]}"]
+    if broken:
+        lines.append(f"  {len(broken)} did not compile: {', '.join(broken)}")
+    passes: dict[str, int] = {}
+    for report in reports:
+        for row in report.rows:
+            passes[row.exercise] = passes.get(row.exercise, 0) + (row.result == "pass")
+    lines.append("  pass rate per exercise, hardest first:")
+    for name, count in sorted(passes.items(), key=lambda item: (item[1], item[0])):
+        lines.append(f"    {name:40} {count}/{n}")
+    return "\n".join(lines)
+
+
 # --- Grading one build ------------------------------------------------------------------------
 
 def now() -> str:
@@ -432,8 +541,10 @@ def grade_build(args: argparse.Namespace, build_dir: Path, source: Path | None, 
     """Build (unless --no-build), run the grading tests, and make the report of one build."""
     default_points, points = exercises.load_points(points_file)
     region_names = []
+    region_files: dict[str, Path] = {}
     if source is not None and source.is_dir():
         regions = exercises.find_regions_with_problems(source)[0]
+        region_files = {region.name: region.path for region in regions}
         try:
             region_names = exercises.graded_names(source, regions)  # and the assignments made of regions
         except ValueError:
@@ -447,7 +558,7 @@ def grade_build(args: argparse.Namespace, build_dir: Path, source: Path | None, 
         say(args, f"  {'built' if built.ok else 'FAILED'} in {built.seconds:.0f} s (log: {built.log})")
         if not built.ok:
             report.rows = rows_for_build_failure(region_names, default_points, points, args.chapter, args.only,
-                                                 built.error)
+                                                 built.error, region_files, source)
             report.notes.append(f"the grading tests do not compile: {built.error}")
             return report
     say(args, "running the grading tests ...")
@@ -549,6 +660,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--student", default="", help="the student id written into --json and --csv")
     parser.add_argument("--json", type=Path, metavar="FILE", help="also write the report as JSON to FILE")
     parser.add_argument("--csv", type=Path, metavar="FILE", help="also write the report as CSV to FILE")
+    parser.add_argument("--gradebook", type=Path, metavar="FILE",
+                        help="also write the gradebook: one row per student, a column per exercise and chapter, the "
+                             "total (CSV)")
+    parser.add_argument("--feedback", type=Path, metavar="DIR",
+                        help="also write each student's report to DIR/STUDENT.txt, to hand back")
     parser.add_argument("--teacher-tests", type=Path, metavar="TEACHER",
                         help="teacher mode: the teacher's FreezeRay tree, whose tests and points.json grade")
     parser.add_argument("--report", type=Path, metavar="DIR",
@@ -611,6 +727,13 @@ def main(argv: list[str] | None = None) -> int:
         args.json.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
     if args.csv is not None:
         write_csv(args.csv, reports)
+    if args.gradebook is not None:
+        write_gradebook(args.gradebook, reports)
+    if args.feedback is not None:
+        write_feedback(args.feedback, reports)
+    if args.batch is not None:
+        print()
+        print(class_summary(reports))
     return 0
 
 

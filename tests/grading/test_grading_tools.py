@@ -494,6 +494,22 @@ CANNED_JUNIT = """\
 """
 
 
+class BuildFailureRows(unittest.TestCase):
+    def test_only_the_exercises_in_the_failing_file_are_said_not_to_compile(self):
+        error = "/work/source/chapters/06-kd-tree/src/sah.cpp:12:5: error: expected expression"
+        files = {"ch06/sah-cost": Path("chapters/06-kd-tree/src/sah.cpp"),
+                 "ch01/lambertian": Path("chapters/01-naive-path-tracing/src/lambertian.cpp")}
+        rows = {row.exercise: row for row in grade.rows_for_build_failure(
+            sorted(files), 1, {}, None, None, error, files, Path("/work/source"))}
+        self.assertEqual(rows["ch06/sah-cost"].result, "FAIL (does not compile)")
+        self.assertEqual(rows["ch01/lambertian"].result,
+                         "FAIL (not graded: chapters/06-kd-tree/src/sah.cpp does not compile)")
+        self.assertEqual(rows["ch01/lambertian"].reason, error)  # the error to fix, on every row
+        # Without a file in the error (a linker's), every exercise is said not to compile.
+        rows = grade.rows_for_build_failure(sorted(files), 1, {}, None, None, "undefined reference to `f()'", files)
+        self.assertEqual({row.result for row in rows}, {"FAIL (does not compile)"})
+
+
 class GradeReport(unittest.TestCase):
     def test_parses_ctest_junit_output(self):
         outcomes = grade.parse_ctest_junit(CANNED_JUNIT)

@@ -206,14 +206,35 @@ class TeacherMode(unittest.TestCase):
         self.assertEqual({row["result"] for row in self.results(report).values()}, {"pass"})
         self.assertNotEqual(json.loads(report.read_text())["source_hash"], data["source_hash"])
 
-        # --batch: both, one CSV.
+        # --batch: the three of them (carol's code does not compile), one CSV, the gradebook to hand
+        # back, a feedback file each and the class summary.
+        carol = self.root / "submissions" / "carol"
+        teacher_tree(carol)
+        (carol / "chapters/01-naive/src/warps.cpp").write_text(WARPS_CPP.replace("return x + x;", "return x + ;"))
         table = self.root / "grades.csv"
+        book = self.root / "gradebook.csv"
+        feedback = self.root / "feedback"
         status, out, err = run_grade(["--teacher-tests", str(self.teacher), "--batch", str(self.root / "submissions"),
-                                      "--build-dir", str(work), "--csv", str(table), "--quiet"])
+                                      "--build-dir", str(work), "--csv", str(table), "--gradebook", str(book),
+                                      "--feedback", str(feedback), "--quiet"])
         self.assertEqual(status, 0, err)
         with table.open() as file:
             overall = {line["student"]: line["earned"] for line in csv.DictReader(file) if line["kind"] == "overall"}
-        self.assertEqual(overall, {"alice": "0", "bob": "4"})
+        self.assertEqual(overall, {"alice": "0", "bob": "4", "carol": "0"})
+        with book.open() as file:
+            wide = {line["student"]: line for line in csv.DictReader(file)}
+        self.assertEqual(sorted(wide), ["alice", "bob", "carol"])
+        self.assertEqual([wide["bob"][n] for n in ("ch01/four-times", "ch01/settle", "ch01/twice")], ["2", "1", "1"])
+        self.assertEqual((wide["bob"]["ch01 total"], wide["bob"]["total"], wide["bob"]["percent"]), ("4", "4", "100%"))
+        self.assertEqual(wide["carol"]["build"], "does not compile")
+        self.assertEqual(wide["alice"]["build"], "ok")
+        self.assertEqual(sorted(p.name for p in feedback.iterdir()), ["alice.txt", "bob.txt", "carol.txt"])
+        self.assertIn("5 == 4", (feedback / "alice.txt").read_text())
+        self.assertIn("--verbose", (feedback / "alice.txt").read_text())
+        self.assertIn("error:", (feedback / "carol.txt").read_text())  # the compiler's own words
+        self.assertIn("class: 3 students", out)
+        self.assertIn("1 did not compile: carol", out)
+        self.assertIn("ch01/twice", out.split("pass rate per exercise")[1])
 
     def test_a_stale_binary_is_refused_and_a_normal_run_rebuilds(self):
         build = self.root / "build"
