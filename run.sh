@@ -15,7 +15,7 @@ if [ "$command" != render ] && [ "$command" != test ] && [ "$command" != compare
 fi
 
 # Debian 12 packages the build needs (README.md, "Dependencies").
-packages=(g++ cmake make pkg-config python3 libglm-dev libstb-dev libtinyobjloader-dev catch2
+packages=(g++ cmake make ccache pkg-config python3 libglm-dev libstb-dev libtinyobjloader-dev catch2
           nlohmann-json3-dev libcli11-dev libopenexr-dev)
 missing=()
 for package in "${packages[@]}"; do
@@ -56,7 +56,13 @@ elif [ "$command" = compare ]; then
         xdg-open "$report" > /dev/null 2>&1 || true
     fi
 else
+    started=$(date +%s)
     cmake --build build --parallel "$jobs" >&2
+    built=$(date +%s)
     # Everything but the benchmarks (label `bench`).
-    ctest --test-dir build --output-on-failure --parallel "$jobs" --label-exclude bench
+    status=0
+    ctest --test-dir build --output-on-failure --parallel "$jobs" --label-exclude bench || status=$?
+    finished=$(date +%s)
+    echo "run.sh test: build $((built - started)) s, tests $((finished - built)) s, total $((finished - started)) s" >&2
+    exit $status
 fi

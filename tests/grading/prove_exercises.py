@@ -6,9 +6,11 @@
 1. Every exercise region has a grading test of the same name in `exercise_tests`, and every
    grading test has a region (`exercise_tests --list-test-names-only`).
 2. In the solution build (--build-dir, already built), every grading test passes.
-3. A student copy with every region stubbed is made in WORK/source, configured in
-   WORK/build (Release, same generator as the solution build) and only the
-   `exercise_tests` target is built; there every grading test must fail, and its output
+3. A student copy with every region stubbed is made in WORK/source, configured (Release,
+   same generator as the solution build) in the folder that lies within the copy where the
+   solution's build folder lies within the solution (WORK/source/build for a build folder
+   `build`; WORK/build when the solution's build is elsewhere), and only the `exercise_tests`
+   target is built: through the compiler cache, only what the stubs change is compiled; there every grading test must fail, and its output
    must show its own stub's ExerciseNotImplemented message.
 
 A test that fails on the student copy only through another exercise's stub (it calls that
@@ -197,6 +199,18 @@ def student_executable(solution_build: Path, solution_executable: Path, student_
     return found
 
 
+def student_build_dir(source: Path, solution_build: Path, work: Path) -> Path:
+    """Where the student copy is built: at the same place within the copy as the solution's build
+    folder within the solution, so that the compiler cache (cmake/CompilerCache.cmake) gives the
+    student build every object whose sources are unchanged and only the files that differ are
+    compiled; WORK/build (everything compiled) when the solution's build lies outside its source."""
+    try:
+        within = solution_build.resolve().relative_to(source.resolve())
+    except ValueError:
+        return work / "build"
+    return work / "source" / within
+
+
 def refresh_copy(source: Path, work: Path, only: str | None = None, stub: bool = True,
                  chapter: str | None = None) -> Path:
     """Make (or bring up to date) the student copy in work/source; return its path."""
@@ -255,9 +269,10 @@ def check_plants(plants: list[Plant], regions: list[exercises.Region], source: P
         print_step(f"planting '{plant.mistake}' in {plant.exercise}")
         copy = refresh_copy(source, work, stub=False)
         plant_mistake(copy, plant, regions)
-        build_student_tests(work / "build", jobs)
-        executable = student_executable(solution_build, solution_executable, work / "build")
-        run = run_test(executable, plant.exercise, work / "build", timeout)
+        student_build = student_build_dir(source, solution_build, work)
+        build_student_tests(student_build, jobs)
+        executable = student_executable(solution_build, solution_executable, student_build)
+        run = run_test(executable, plant.exercise, student_build, timeout)
         others = [p.expect for p in plants if p.exercise == plant.exercise and p is not plant and p.expect in run.output]
         if run.passed:
             verdict = "VIOLATION: the test passes"
@@ -341,7 +356,7 @@ def check_stubbed(proofs: dict[str, Proof], executable: Path, build_dir: Path, t
 def isolate(proofs: dict[str, Proof], names: list[str], source: Path, work: Path, solution_build: Path,
             solution_executable: Path, jobs: int, timeout: float) -> None:
     """Check each named exercise on a copy where it alone is stubbed (incremental rebuilds)."""
-    student_build = work / "build"
+    student_build = student_build_dir(source, solution_build, work)
     for name in names:
         proof = proofs[name]
         if proof.parts:  # an assignment made of regions: its chapter's regions, its parts among them, stubbed
@@ -427,16 +442,17 @@ def prove(args: argparse.Namespace) -> int:
     if any(proof.has_test and proof.has_region for proof in proofs.values()):
         try:
             copy = refresh_copy(source, work)
-            configure_student_build(copy, work / "build", submission.read_cmake_cache(build_dir))
-            warnings = build_student_tests(work / "build", args.jobs)
+            student_build = student_build_dir(source, build_dir, work)
+            configure_student_build(copy, student_build, submission.read_cmake_cache(build_dir))
+            warnings = build_student_tests(student_build, args.jobs)
             if warnings:
                 # A student reads every warning as theirs: the stubs must not cause any
                 # (cmake/Warnings.cmake turns off the unused-name warnings in a student copy).
                 problems.append(f"the student copy compiles with {len(warnings)} warning(s), which the "
                                 "student would take for their own:\n" + "\n".join(warnings[:10]))
-            stubbed_executable = student_executable(build_dir, executable, work / "build")
+            stubbed_executable = student_executable(build_dir, executable, student_build)
             print_step("running the grading tests on the stubs")
-            to_isolate = check_stubbed(proofs, stubbed_executable, work / "build", args.test_timeout)
+            to_isolate = check_stubbed(proofs, stubbed_executable, student_build, args.test_timeout)
             if to_isolate and args.isolate:
                 isolate(proofs, to_isolate, source, work, build_dir, executable, args.jobs, args.test_timeout)
             else:

@@ -304,6 +304,63 @@ class OwnExercises(unittest.TestCase):
                 self.assertEqual(result.returncode, 0, f"{path}: {submission.first_error(result.stderr)}")
 
 
+@unittest.skipUnless(shutil.which("cmake") and shutil.which("ccache"), "needs cmake and ccache")
+class StudentBuildThroughTheCache(unittest.TestCase):
+    """The grading proof builds its student copy through the compiler cache at the same place
+    within the copy as the solution's build (prove_exercises.student_build_dir): only the files
+    the stubs change are compiled. An object is keyed by everything it was compiled from, so a
+    stub cannot hide behind the solution's object; and if a stale object were ever used, the
+    proof's own check (every stub reached) fails, as planting one here shows."""
+
+    def test_only_stubbed_files_compile_and_a_stale_object_would_be_caught(self):
+        import prove_exercises  # noqa: E402  (beside this script)
+        with tempfile.TemporaryDirectory(prefix="freezeray-cache-test-") as temporary:
+            root = Path(temporary)
+            solution = root / "solution"
+            teacher_tree(solution)
+            cmake = CMAKE.replace("enable_testing()", f"include({REPOSITORY}/cmake/CompilerCache.cmake)\nenable_testing()")
+            (solution / "CMakeLists.txt").write_text(cmake)
+            environment = dict(os.environ, CCACHE_DIR=str(root / "cache"))
+
+            def run(command: list[str]) -> str:
+                result = subprocess.run(command, capture_output=True, text=True, env=environment)
+                self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+                return result.stdout
+
+            solution_build = solution / "build"
+            run(["cmake", "-S", str(solution), "-B", str(solution_build)])
+            run(["cmake", "--build", str(solution_build)])
+            run(["ccache", "--zero-stats"])
+
+            work = root / "work"
+            copy = prove_exercises.refresh_copy(solution, work)
+            student_build = prove_exercises.student_build_dir(solution, solution_build, work)
+            self.assertEqual(student_build, work / "source" / "build")
+            run(["cmake", "-S", str(copy), "-B", str(student_build)])
+            run(["cmake", "--build", str(student_build)])
+            stats = dict(line.split("\t") for line in run(["ccache", "--print-stats"]).splitlines() if "\t" in line)
+            self.assertEqual(int(stats["direct_cache_hit"]), 1, stats)  # the grading tests' file: unchanged
+            self.assertEqual(int(stats["cache_miss"]), 1, stats)        # warps.cpp, whose regions are stubs
+
+            executable = student_build / "exercise_tests"
+            def stub_reached(name: str) -> bool:
+                result = subprocess.run([str(executable), name], capture_output=True, text=True)
+                return result.returncode != 0 and name in prove_exercises.stubs_in(result.stdout + result.stderr)
+            names = ["ch01/twice", "ch01/four-times", "ch01/settle"]
+            self.assertTrue(all(stub_reached(name) for name in names))
+
+            # Break it on purpose: the solution's object over the student's, newer than its source.
+            objects = list(solution_build.rglob("warps.cpp.o"))
+            self.assertEqual(len(objects), 1)
+            stale = student_build / objects[0].relative_to(solution_build)
+            shutil.copy2(objects[0], stale)
+            later = time.time() + 5
+            os.utime(stale, (later, later))
+            run(["cmake", "--build", str(student_build)])
+            self.assertFalse(any(stub_reached(name) for name in names),
+                             "with the solution's object the stubs pass: the proof's check would fail")
+
+
 class BuildFailureReason(unittest.TestCase):
     """The reason shown for a failed build is the compiler's first error, not a progress line."""
 
