@@ -343,17 +343,30 @@ ERROR_FILE = re.compile(r"^(?P<file>\S[^:]*):\d+(?::\d+)?:\s+(?:fatal )?error:")
 
 
 def failing_file(error: str, source: Path | None) -> Path | None:
-    """The file the build's first error is in, relative to the graded tree when it lies inside it."""
+    """The file the build's first error is in, relative to the graded tree where that can be told:
+    an absolute path inside it, or a path relative to the compiling folder (as the compiler cache
+    writes them: ../../chapters/...), whose leading ../ are dropped."""
     match = ERROR_FILE.match(error.strip())
     if match is None:
         return None
     path = Path(match["file"])
-    if source is not None and path.is_absolute():
-        try:
-            return path.resolve().relative_to(source.resolve())
-        except ValueError:
-            return path
-    return path
+    if path.is_absolute():
+        if source is not None:
+            try:
+                return path.resolve().relative_to(source.resolve())
+            except ValueError:
+                pass
+        return path
+    parts = list(path.parts)
+    while parts and parts[0] in ("..", "."):
+        parts.pop(0)
+    return Path(*parts) if parts else path
+
+
+def same_file(region_file: Path, broken: Path) -> bool:
+    """Whether the error's file is the region's (the error's may carry a leading folder)."""
+    own, theirs = region_file.as_posix(), broken.as_posix()
+    return theirs == own or theirs.endswith("/" + own)
 
 
 def rows_for_build_failure(region_names: list[str], default_points: int, points: dict[str, int],
@@ -366,7 +379,7 @@ def rows_for_build_failure(region_names: list[str], default_points: int, points:
     outcomes = {}
     for name in region_names:
         own = (region_files or {}).get(name)
-        if broken is not None and own is not None and own != broken:
+        if broken is not None and own is not None and not same_file(own, broken):
             outcomes[name] = Outcome("fail", f"not graded: {broken.as_posix()} does not compile", error)
         else:
             outcomes[name] = Outcome("fail", "does not compile", error)

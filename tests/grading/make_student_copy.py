@@ -153,13 +153,36 @@ def includes_error_header(path: Path, roots: list[Path], seen: set[Path] | None 
     return False
 
 
+# What a stub leaves unused (the parameters, locals and helpers its region used) would show as
+# warnings the student takes for their own mistakes. They are turned off in the stubbed files
+# alone, by pragmas around the file, so that every other file of the copy compiles with exactly
+# the solution's command line and the compiler cache gives the student build the solution's
+# objects for them (cmake/CompilerCache.cmake).
+QUIET_UNUSED = ("-Wunused-parameter", "-Wunused-variable", "-Wunused-but-set-variable", "-Wunused-function")
+
+
+def quiet_unused_warnings(text: str) -> str:
+    """Wrap a stubbed file in `#pragma GCC diagnostic` push/ignored/pop for QUIET_UNUSED (after
+    `#pragma once` in a header)."""
+    lines = text.splitlines(keepends=True)
+    newline = "\r\n" if lines and lines[0].endswith("\r\n") else "\n"
+    opening = [f"// The exercise stubs below leave names unused until you write them: no warning for that.{newline}",
+               f"#pragma GCC diagnostic push{newline}",
+               *(f'#pragma GCC diagnostic ignored "{flag}"{newline}' for flag in QUIET_UNUSED)]
+    position = next((i + 1 for i, line in enumerate(lines) if PRAGMA_ONCE.match(line)), 0)
+    if lines and not lines[-1].endswith("\n"):
+        lines[-1] += newline
+    return "".join(lines[:position] + opening + lines[position:] + [f"#pragma GCC diagnostic pop{newline}"])
+
+
 def student_text(source: Path, path: Path, regions: list[exercises.Region], roots: list[Path]) -> str:
-    """The student version of one source file: its regions stubbed, error.hpp included."""
+    """The student version of one source file: its regions stubbed, error.hpp included, the
+    warnings of what the stubs leave unused turned off in it."""
     text = (source / path).read_text(encoding="utf-8")
     stubbed = stub_regions(text, regions)
     if not includes_error_header((source / path).resolve(), roots):
         stubbed = add_error_include(stubbed)
-    return stubbed
+    return quiet_unused_warnings(stubbed)
 
 
 # --- Writing the copy -------------------------------------------------------------------------

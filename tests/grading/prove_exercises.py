@@ -121,7 +121,8 @@ def regions_named_in(log: str, copy: Path, regions: list[exercises.Region]) -> s
     prefix = str(copy.resolve()) + os.sep
     suspects = []
     for region in regions:
-        if prefix + str(region.path) in log:
+        # An absolute path, or one relative to the compiling folder (the compiler cache's: ../../x).
+        if prefix + str(region.path) in log or f"../{region.path.as_posix()}:" in log:
             suspects.append(f"{region.name} ({region.location})")
     return ("\nexercise regions in the files with errors: " + ", ".join(suspects)) if suspects else ""
 

@@ -409,9 +409,22 @@ class StudentCopy(TreeTestCase):
         copy = self.copy()
         warps = (copy / "chapters/01-naive/src/warps.cpp").read_text()
         self.assertEqual(warps.count("#include"), 1, "warps.hpp already brings error.hpp")
-        estimator = (copy / "chapters/01-naive/src/estimator.cpp").read_text().splitlines()
+        estimator = [line for line in (copy / "chapters/01-naive/src/estimator.cpp").read_text().splitlines()
+                     if not line.startswith(("#pragma GCC diagnostic", "// The exercise stubs"))]
         self.assertEqual(estimator[:3], ["#include <cmath>", "#include <vector>",
                                          '#include "freezeray/error.hpp"'])
+
+    def test_a_stubbed_file_alone_silences_what_its_stubs_leave_unused(self):
+        copy = self.copy("--only", "ch01/four-times")
+        stubbed = (copy / "chapters/01-naive/src/estimator.cpp").read_text().splitlines()
+        self.assertIn("#pragma GCC diagnostic push", stubbed)
+        self.assertIn('#pragma GCC diagnostic ignored "-Wunused-parameter"', stubbed)
+        self.assertEqual(stubbed[-1], "#pragma GCC diagnostic pop")
+        # A file without a stub is the solution's, byte for byte (its object comes from the cache).
+        self.assertNotIn("#pragma GCC diagnostic", (copy / "chapters/01-naive/src/warps.cpp").read_text())
+        header = make_student_copy.quiet_unused_warnings("#pragma once\nint f(int x);\n").splitlines()
+        self.assertEqual(header[0], "#pragma once")
+        self.assertEqual(header[2], "#pragma GCC diagnostic push")
 
     def test_include_added_to_a_file_without_includes(self):
         text = make_student_copy.add_error_include("#pragma once\nint f();\n")
@@ -505,6 +518,12 @@ class BuildFailureRows(unittest.TestCase):
         self.assertEqual(rows["ch01/lambertian"].result,
                          "FAIL (not graded: chapters/06-kd-tree/src/sah.cpp does not compile)")
         self.assertEqual(rows["ch01/lambertian"].reason, error)  # the error to fix, on every row
+        # The compiler cache writes paths relative to the compiling folder.
+        relative = "../../chapters/06-kd-tree/src/sah.cpp:12:5: error: expected expression"
+        rows = {row.exercise: row for row in grade.rows_for_build_failure(sorted(files), 1, {}, None, None, relative, files)}
+        self.assertEqual(rows["ch06/sah-cost"].result, "FAIL (does not compile)")
+        self.assertEqual(rows["ch01/lambertian"].result,
+                         "FAIL (not graded: chapters/06-kd-tree/src/sah.cpp does not compile)")
         # Without a file in the error (a linker's), every exercise is said not to compile.
         rows = grade.rows_for_build_failure(sorted(files), 1, {}, None, None, "undefined reference to `f()'", files)
         self.assertEqual({row.result for row in rows}, {"FAIL (does not compile)"})
