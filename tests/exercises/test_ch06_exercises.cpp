@@ -13,6 +13,7 @@
 #include "freezeray/random.hpp"
 #include "freezeray/ch01/warps.hpp"
 
+#include "bias_detectors.hpp"
 #include "test_bounds.hpp"
 
 #include <catch2/catch.hpp>
@@ -80,6 +81,58 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> reference_clip(const glm::dvec3
 
 }  // namespace
 
+namespace {
+
+// One case of ch06/sah-cost: a cell split at a plane, the triangles on each side and the areas of
+// the two children and of the cell (as the case's comment works them out).
+struct SahCase {
+    Bounds3 cell;
+    int axis;
+    float position;
+    int below, above;
+    double area_below, area_above, area_cell;
+};
+
+// The cost of a case by the formula of book chapter 06 (MacDonald and Booth 1990; Wald and Havran
+// 2006, with the empty bonus), or with one classic mistake, so that a wrong answer can be named.
+struct SahMistakes {
+    bool no_area_division = false, bonus_as_factor = false, bonus_on_traversal = false, counts_swapped = false;
+};
+double sah_model(const KdTreeSettings& s, const SahCase& c, const SahMistakes& m = {}) {
+    const double scale = m.no_area_division ? 1.0 : 1.0 / c.area_cell;
+    const double below = m.counts_swapped ? c.above : c.below, above = m.counts_swapped ? c.below : c.above;
+    const double bonus = (c.below == 0 || c.above == 0) ? s.empty_bonus : 0.0;
+    const double factor = m.bonus_as_factor && bonus > 0.0 ? bonus : 1.0 - bonus;
+    const double intersections = s.intersection_cost * scale * (c.area_below * below + c.area_above * above);
+    return m.bonus_on_traversal ? factor * (s.traversal_cost + intersections) : s.traversal_cost + factor * intersections;
+}
+
+// Checks one case; on failure says which case, what was expected and what came, and names the
+// classic mistake the answer matches, if one does.
+void check_sah(const KdTreeSettings& s, const SahCase& c, double epsilon = 1e-12) {
+    const double expected = sah_model(s, c);
+    const double got = split_cost(s, c.cell, c.axis, c.position, static_cast<std::size_t>(c.below),
+                                  static_cast<std::size_t>(c.above));
+    std::vector<testing::Suspect> suspects;
+    auto suspect = [&](const std::string& mistake, const SahMistakes& m) {
+        const double predicted = sah_model(s, c, m);
+        if (std::abs(predicted - expected) > 1e-9 * std::abs(expected)) suspects.push_back({mistake, predicted});
+    };
+    suspect("the children's areas are not divided by the cell's: the probability that a ray through the cell "
+            "meets a child is SA(child) / SA(cell)", {.no_area_division = true});
+    suspect("the empty bonus multiplies the intersection cost; it takes its share off: (1 - bonus)",
+            {.bonus_as_factor = true});
+    suspect("the empty bonus also scales the traversal cost; it applies to the intersection term only",
+            {.bonus_on_traversal = true});
+    suspect("the counts are swapped: the triangles below go with the area below", {.counts_swapped = true});
+    INFO("split on axis " << c.axis << " at " << c.position << ", " << c.below << " triangles below and " << c.above
+                          << " above: expected " << expected << ", got " << got);
+    INFO(testing::likely_mistake(got, suspects, 1e-6));
+    CHECK(got == Approx(expected).epsilon(epsilon));
+}
+
+}  // namespace
+
 TEST_CASE("ch06/sah-cost", "[exercise]") {
     KdTreeSettings s;  // the costs are set here, whatever the defaults are
     s.traversal_cost = 15.0f;
@@ -87,29 +140,27 @@ TEST_CASE("ch06/sah-cost", "[exercise]") {
     s.empty_bonus = 0.25f;
     const Bounds3 cube = box(Vec3(0.0f), Vec3(1.0f));  // surface area 6
     // Halves: each child has area 4 of 6.
-    REQUIRE(split_cost(s, cube, 0, 0.5f, 3, 5) == Approx(15.0 + 20.0 * (4.0 / 6.0 * 3 + 4.0 / 6.0 * 5)).epsilon(1e-12));
-    CHECK(split_cost(s, cube, 1, 0.5f, 3, 5) == Approx(15.0 + 20.0 * (4.0 / 6.0 * 8)).epsilon(1e-12));
+    check_sah(s, {cube, 0, 0.5f, 3, 5, 4.0, 4.0, 6.0});
+    check_sah(s, {cube, 1, 0.5f, 3, 5, 4.0, 4.0, 6.0});
     // At 0.25 along z: areas 2 (0.25 + 0.25 + 1) = 3 and 2 (0.75 + 0.75 + 1) = 5.
-    CHECK(split_cost(s, cube, 2, 0.25f, 4, 2) == Approx(15.0 + 20.0 * (3.0 / 6.0 * 4 + 5.0 / 6.0 * 2)).epsilon(1e-12));
+    check_sah(s, {cube, 2, 0.25f, 4, 2, 3.0, 5.0, 6.0});
     // One child empty: the bonus takes a quarter of the intersection cost off.
-    CHECK(split_cost(s, cube, 0, 0.25f, 0, 4) == Approx(15.0 + 0.75 * 20.0 * (5.0 / 6.0 * 4)).epsilon(1e-12));
-    CHECK(split_cost(s, cube, 0, 0.75f, 4, 0) == Approx(15.0 + 0.75 * 20.0 * (5.0 / 6.0 * 4)).epsilon(1e-12));
+    check_sah(s, {cube, 0, 0.25f, 0, 4, 3.0, 5.0, 6.0});
+    check_sah(s, {cube, 0, 0.75f, 4, 0, 5.0, 3.0, 6.0});
     // A plane on the cell's face: the flat child still has the area of its two faces, 2 of 6.
-    CHECK(split_cost(s, cube, 0, 0.0f, 2, 5) == Approx(15.0 + 20.0 * (2.0 / 6.0 * 2 + 1.0 * 5)).epsilon(1e-12));
+    check_sah(s, {cube, 0, 0.0f, 2, 5, 2.0, 6.0, 6.0});
     // A flat cell 2 x 1 x 0 (area 4): split at x = 0.5 into areas 1 and 3.
-    const Bounds3 flat = box(Vec3(0.0f), Vec3(2.0f, 1.0f, 0.0f));
-    CHECK(split_cost(s, flat, 0, 0.5f, 2, 2) == Approx(15.0 + 20.0 * (0.25 * 2 + 0.75 * 2)).epsilon(1e-12));
+    check_sah(s, {box(Vec3(0.0f), Vec3(2.0f, 1.0f, 0.0f)), 0, 0.5f, 2, 2, 1.0, 3.0, 4.0});
     // Other costs, and a box far from the origin (areas, not coordinates, matter).
     s.traversal_cost = 1.0f;
     s.intersection_cost = 80.0f;
     s.empty_bonus = 0.5f;
     const Bounds3 far = box(Vec3(1000.0f, -3000.0f, 50.0f), Vec3(1004.0f, -2998.0f, 51.0f));  // 4 x 2 x 1, area 28
     // x = 1001: below 1 x 2 x 1 (area 10), above 3 x 2 x 1 (area 22).
-    CHECK(split_cost(s, far, 0, 1001.0f, 7, 9) == Approx(1.0 + 80.0 * (10.0 / 28.0 * 7 + 22.0 / 28.0 * 9)).epsilon(1e-12));
-    CHECK(split_cost(s, far, 0, 1001.0f, 0, 9) == Approx(1.0 + 0.5 * 80.0 * (22.0 / 28.0 * 9)).epsilon(1e-12));
-    // A huge cell: no overflow.
-    const Bounds3 huge = box(Vec3(-1e30f), Vec3(1e30f));
-    CHECK(split_cost(s, huge, 1, 0.0f, 1, 1) == Approx(1.0 + 80.0 * (4.0 / 6.0 * 2)).epsilon(1e-6));
+    check_sah(s, {far, 0, 1001.0f, 7, 9, 10.0, 22.0, 28.0});
+    check_sah(s, {far, 0, 1001.0f, 0, 9, 10.0, 22.0, 28.0});
+    // A huge cell: no overflow (children of area 16e60 in a cell of 24e60).
+    check_sah(s, {box(Vec3(-1e30f), Vec3(1e30f)), 1, 0.0f, 1, 1, 16e60, 16e60, 24e60}, 1e-6);
 }
 
 namespace {

@@ -175,6 +175,27 @@ def quiet_unused_warnings(text: str) -> str:
     return "".join(lines[:position] + opening + lines[position:] + [f"#pragma GCC diagnostic pop{newline}"])
 
 
+def includes_any(path: Path, targets: set[Path], roots: list[Path], seen: set[Path] | None = None) -> bool:
+    """True when the file includes one of `targets` (resolved paths), directly or through project headers."""
+    seen = set() if seen is None else seen
+    if path in seen or not path.is_file():
+        return False
+    seen.add(path)
+    text = path.read_text(encoding="utf-8", errors="replace")
+    for match in QUOTED_INCLUDE.finditer(text):
+        for folder in [path.parent, *roots]:
+            candidate = folder / match["header"]
+            if candidate.is_file():
+                resolved = candidate.resolve()
+                if resolved in targets or includes_any(resolved, targets, roots, seen):
+                    return True
+                break
+    return False
+
+
+SOURCE_SUFFIXES = (".cpp", ".cc", ".hpp", ".h", ".inl")
+
+
 def student_text(source: Path, path: Path, regions: list[exercises.Region], roots: list[Path]) -> str:
     """The student version of one source file: its regions stubbed, error.hpp included, the
     warnings of what the stubs leave unused turned off in it."""
@@ -251,6 +272,7 @@ def make_student_copy(source: Path, destination: Path, only: str | None = None,
 
     files = list_files(source, exclude=destination)
     roots = include_roots(source)
+    stubbed_headers = {(source / p).resolve() for p in by_file if p.suffix in (".hpp", ".h", ".inl")}
     written = 0
     for path in files:
         origin = source / path
@@ -266,6 +288,10 @@ def make_student_copy(source: Path, destination: Path, only: str | None = None,
             continue
         if path in by_file:
             content = student_text(source, path, by_file[path], roots).encode("utf-8")
+        elif path.suffix in SOURCE_SUFFIXES and stubbed_headers and includes_any(origin.resolve(), stubbed_headers, roots):
+            # It includes a stubbed header, so it compiles anew anyway; what the stub there leaves
+            # unused may be defined here (a helper only the solution called).
+            content = quiet_unused_warnings(origin.read_text(encoding="utf-8")).encode("utf-8")
         else:
             content = origin.read_bytes()
         written += write_if_changed(target, content, origin.stat().st_mode)
