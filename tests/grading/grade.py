@@ -338,15 +338,11 @@ def build_rows(outcomes: dict[str, Outcome], region_names: list[str], default_po
     return rows
 
 
-# The file a compiler's error names: "path/file.cpp:12:5: error: ...".
-ERROR_FILE = re.compile(r"^(?P<file>\S[^:]*):\d+(?::\d+)?:\s+(?:fatal )?error:")
-
-
 def failing_file(error: str, source: Path | None) -> Path | None:
     """The file the build's first error is in, relative to the graded tree where that can be told:
     an absolute path inside it, or a path relative to the compiling folder (as the compiler cache
     writes them: ../../chapters/...), whose leading ../ are dropped."""
-    match = ERROR_FILE.match(error.strip())
+    match = submission.COMPILER_ERROR.match(error.strip())  # its file: "path/file.cpp:12:5: error: ..."
     if match is None:
         return None
     path = Path(match["file"])

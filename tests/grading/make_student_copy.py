@@ -133,8 +133,10 @@ def include_roots(root: Path) -> list[Path]:
     return [folder for folder in roots if folder.is_dir()]
 
 
-def includes_error_header(path: Path, roots: list[Path], seen: set[Path] | None = None) -> bool:
-    """True when the file includes freezeray/error.hpp, directly or through project headers."""
+def includes_matching(path: Path, roots: list[Path], matches, seen: set[Path] | None = None) -> bool:
+    """True when the file includes, directly or through project headers, a header for which
+    matches(name as the #include writes it, the resolved file or None) holds. Quoted includes are
+    resolved against the file's folder, then `roots`."""
     seen = set() if seen is None else seen
     if path in seen or not path.is_file():
         return False
@@ -142,15 +144,23 @@ def includes_error_header(path: Path, roots: list[Path], seen: set[Path] | None 
     text = path.read_text(encoding="utf-8", errors="replace")
     for match in QUOTED_INCLUDE.finditer(text):
         header = match["header"]
-        if header == exercises.ERROR_HEADER:
+        found = next((folder / header for folder in [path.parent, *roots] if (folder / header).is_file()), None)
+        resolved = found.resolve() if found is not None else None
+        if matches(header, resolved):
             return True
-        for folder in [path.parent, *roots]:
-            candidate = folder / header
-            if candidate.is_file():
-                if includes_error_header(candidate.resolve(), roots, seen):
-                    return True
-                break
+        if resolved is not None and includes_matching(resolved, roots, matches, seen):
+            return True
     return False
+
+
+def includes_error_header(path: Path, roots: list[Path]) -> bool:
+    """True when the file includes freezeray/error.hpp, directly or through project headers."""
+    return includes_matching(path, roots, lambda header, _: header == exercises.ERROR_HEADER)
+
+
+def includes_any(path: Path, targets: set[Path], roots: list[Path]) -> bool:
+    """True when the file includes one of `targets` (resolved paths), directly or through project headers."""
+    return includes_matching(path, roots, lambda _, resolved: resolved in targets)
 
 
 # What a stub leaves unused (the parameters, locals and helpers its region used) would show as
@@ -173,24 +183,6 @@ def quiet_unused_warnings(text: str) -> str:
     if lines and not lines[-1].endswith("\n"):
         lines[-1] += newline
     return "".join(lines[:position] + opening + lines[position:] + [f"#pragma GCC diagnostic pop{newline}"])
-
-
-def includes_any(path: Path, targets: set[Path], roots: list[Path], seen: set[Path] | None = None) -> bool:
-    """True when the file includes one of `targets` (resolved paths), directly or through project headers."""
-    seen = set() if seen is None else seen
-    if path in seen or not path.is_file():
-        return False
-    seen.add(path)
-    text = path.read_text(encoding="utf-8", errors="replace")
-    for match in QUOTED_INCLUDE.finditer(text):
-        for folder in [path.parent, *roots]:
-            candidate = folder / match["header"]
-            if candidate.is_file():
-                resolved = candidate.resolve()
-                if resolved in targets or includes_any(resolved, targets, roots, seen):
-                    return True
-                break
-    return False
 
 
 SOURCE_SUFFIXES = (".cpp", ".cc", ".hpp", ".h", ".inl")

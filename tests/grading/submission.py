@@ -173,7 +173,7 @@ def read_cmake_cache(build_dir: Path) -> dict[str, str]:
 
 
 # A compiler's diagnostic: "path/file.cpp:12:5: error: ..." (GCC and Clang; "fatal error" too).
-COMPILER_ERROR = re.compile(r"^\S[^:]*:\d+(?::\d+)?:\s+(?:fatal )?error:")
+COMPILER_ERROR = re.compile(r"^(?P<file>\S[^:]*):\d+(?::\d+)?:\s+(?:fatal )?error:")
 # A progress line of the build tool ("[ 5%] Building CXX object .../error.cpp.o"): never a reason.
 PROGRESS_LINE = re.compile(r"^\s*\[\s*\d+%\]|^\s*(?:g?make|ninja)(?:\[\d+\])?:")
 
